@@ -1,0 +1,225 @@
+//! The local shading frame and the direction helpers that work in it.
+//!
+//! Models evaluate directions in a local frame where `z` is the shading normal, so that
+//! `cos θ = w.z`. [`Frame`] carries directions between world space and that frame; the
+//! free functions here read angles off local directions and reflect or refract them.
+
+use crate::math::{safe_sqrt, sqrt};
+use crate::param::Eta;
+use glam::Vec3;
+
+/// An orthonormal, right-handed basis `(x, y, z)` whose `z` is a shading normal.
+///
+/// ```
+/// use lobe::{Frame, Vec3};
+/// let n = Vec3::new(1.0, 2.0, 2.0) / 3.0;
+/// let frame = Frame::from_normal(n);
+/// let w = Vec3::new(0.0, 0.6, 0.8);
+/// let local = frame.to_local(w);
+/// assert!((local.z - n.dot(w)).abs() < 1e-6);
+/// assert!((frame.to_world(local) - w).length() < 1e-6);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Frame {
+    /// The first tangent.
+    pub x: Vec3,
+    /// The second tangent, `z × x`.
+    pub y: Vec3,
+    /// The normal.
+    pub z: Vec3,
+}
+
+impl Frame {
+    /// A frame around the unit normal `n`, with tangents chosen without branching on the
+    /// sign of `n.z` (Duff et al. 2017, "Building an Orthonormal Basis, Revisited",
+    /// JCGT 6(1), Listing 3). The tangents are continuous except across `n.z = 0`.
+    ///
+    /// Precondition: `n` has unit length.
+    #[inline]
+    #[must_use]
+    pub fn from_normal(n: Vec3) -> Self {
+        let sign = crate::math::copysign(1.0, n.z);
+        let a = -1.0 / (sign + n.z);
+        let b = n.x * n.y * a;
+        Self {
+            x: Vec3::new(1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x),
+            y: Vec3::new(b, sign + n.y * n.y * a, -n.y),
+            z: n,
+        }
+    }
+
+    /// A frame around the unit normal `n` whose `x` follows the tangent `t` (for example
+    /// `∂p/∂u`, which orients an anisotropic lobe), made orthogonal to `n` by Gram-Schmidt.
+    ///
+    /// When `t` is (nearly) parallel to `n`, or not finite, falls back to
+    /// [`Frame::from_normal`]. Precondition: `n` has unit length; `t` need not.
+    #[inline]
+    #[must_use]
+    pub fn from_normal_tangent(n: Vec3, t: Vec3) -> Self {
+        let x = t - n * n.dot(t);
+        let len2 = x.length_squared();
+        if !(len2 > 1e-12 * t.length_squared()) || !len2.is_finite() {
+            return Self::from_normal(n);
+        }
+        let x = x / sqrt(len2);
+        Self {
+            x,
+            y: n.cross(x),
+            z: n,
+        }
+    }
+
+    /// The world-space direction `v` expressed in this frame.
+    #[inline]
+    #[must_use]
+    pub fn to_local(&self, v: Vec3) -> Vec3 {
+        Vec3::new(v.dot(self.x), v.dot(self.y), v.dot(self.z))
+    }
+
+    /// The local direction `v` expressed in world space.
+    #[inline]
+    #[must_use]
+    pub fn to_world(&self, v: Vec3) -> Vec3 {
+        self.x * v.x + self.y * v.y + self.z * v.z
+    }
+}
+
+/// `cos θ` of a local direction: its `z`.
+#[inline]
+#[must_use]
+pub fn cos_theta(w: Vec3) -> f32 {
+    w.z
+}
+
+/// `cos² θ` of a local direction.
+#[inline]
+#[must_use]
+pub fn cos2_theta(w: Vec3) -> f32 {
+    w.z * w.z
+}
+
+/// `sin² θ = 1 − cos² θ`, clamped at zero.
+#[inline]
+#[must_use]
+pub fn sin2_theta(w: Vec3) -> f32 {
+    (1.0 - w.z * w.z).max(0.0)
+}
+
+/// `sin θ`, never NaN for a unit direction.
+#[inline]
+#[must_use]
+pub fn sin_theta(w: Vec3) -> f32 {
+    safe_sqrt(1.0 - w.z * w.z)
+}
+
+/// `tan² θ = sin² θ / cos² θ`; `+∞` for a direction in the tangent plane.
+#[inline]
+#[must_use]
+pub fn tan2_theta(w: Vec3) -> f32 {
+    sin2_theta(w) / cos2_theta(w)
+}
+
+/// `cos φ` of a local direction; `1` along the normal, where `φ` is undefined.
+#[inline]
+#[must_use]
+pub fn cos_phi(w: Vec3) -> f32 {
+    let s = sin_theta(w);
+    if s == 0.0 {
+        1.0
+    } else {
+        (w.x / s).clamp(-1.0, 1.0)
+    }
+}
+
+/// `sin φ` of a local direction; `0` along the normal, where `φ` is undefined.
+#[inline]
+#[must_use]
+pub fn sin_phi(w: Vec3) -> f32 {
+    let s = sin_theta(w);
+    if s == 0.0 {
+        0.0
+    } else {
+        (w.y / s).clamp(-1.0, 1.0)
+    }
+}
+
+/// True when two local directions lie strictly on the same side of the surface.
+#[inline]
+#[must_use]
+pub fn same_hemisphere(a: Vec3, b: Vec3) -> bool {
+    a.z * b.z > 0.0
+}
+
+/// The mirror reflection of `w` about the unit normal `n`: `2 (w·n) n − w`.
+///
+/// `w` points away from the surface, and so does the result (seed 003, "Mirror reflection").
+#[inline]
+#[must_use]
+pub fn reflect(w: Vec3, n: Vec3) -> Vec3 {
+    2.0 * w.dot(n) * n - w
+}
+
+/// The direction refracted from `w` through an interface with unit normal `n` and relative
+/// index `eta = η_inside / η_outside` (`n` points outside), or `None` on total internal
+/// reflection.
+///
+/// `w` points away from the surface on either side; the sign of `w·n` says which. The
+/// result points away from the surface on the other side and obeys Snell's law
+/// `η_i sin θ_i = η_t sin θ_t`. Total internal reflection happens exactly when
+/// `(η_i/η_t)² sin² θ_i > 1`. (PBR 4th ed., §9.3.2, eq. 9.5 and the vector form after it.)
+#[inline]
+#[must_use]
+pub fn refract(w: Vec3, n: Vec3, eta: Eta) -> Option<Vec3> {
+    let mut cos_i = w.dot(n);
+    // η_t / η_i, and the normal turned toward w's side.
+    let (eta_ti_inv, n) = if cos_i >= 0.0 {
+        (1.0 / eta.get(), n)
+    } else {
+        cos_i = -cos_i;
+        (eta.get(), -n)
+    };
+    // sin² θ_t = (η_i/η_t)² sin² θ_i. sin² θ_i is |w × n|² rather than 1 − cos² θ_i, which
+    // cancels near normal incidence, where a large η magnifies the error.
+    let sin2_t = eta_ti_inv * eta_ti_inv * w.cross(n).length_squared();
+    if sin2_t > 1.0 {
+        return None;
+    }
+    let cos_t = safe_sqrt(1.0 - sin2_t);
+    Some(-w * eta_ti_inv + n * (eta_ti_inv * cos_i - cos_t))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn angle_helpers_on_known_directions() {
+        let w = Vec3::new(0.6, 0.0, 0.8);
+        assert_eq!(cos_theta(w), 0.8);
+        assert!((sin2_theta(w) - 0.36).abs() < 1e-6);
+        assert!((tan2_theta(w) - 0.5625).abs() < 1e-6);
+        assert!((cos_phi(w) - 1.0).abs() < 1e-6);
+        assert_eq!(sin_phi(w), 0.0);
+        assert_eq!((cos_phi(Vec3::Z), sin_phi(Vec3::Z)), (1.0, 0.0));
+        assert_eq!(tan2_theta(Vec3::X), f32::INFINITY);
+        assert!(same_hemisphere(w, Vec3::Z));
+        assert!(!same_hemisphere(w, Vec3::X));
+        assert!(!same_hemisphere(w, -Vec3::Z));
+    }
+
+    #[test]
+    fn reflect_mirrors_about_the_normal() {
+        let w = Vec3::new(0.6, 0.0, 0.8);
+        assert!((reflect(w, Vec3::Z) - Vec3::new(-0.6, 0.0, 0.8)).length() < 1e-6);
+    }
+
+    #[test]
+    fn tangent_frame_follows_the_tangent() {
+        let n = Vec3::new(0.0, 0.0, 1.0);
+        let f = Frame::from_normal_tangent(n, Vec3::new(2.0, 0.0, 1.0));
+        assert!((f.x - Vec3::X).length() < 1e-6);
+        assert!((f.y - Vec3::Y).length() < 1e-6);
+        assert_eq!(Frame::from_normal_tangent(n, n), Frame::from_normal(n));
+        assert_eq!(Frame::from_normal_tangent(n, Vec3::NAN), Frame::from_normal(n));
+    }
+}

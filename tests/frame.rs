@@ -1,0 +1,120 @@
+//! The shading frame is orthonormal and right-handed, and reflect/refract obey the laws of
+//! reflection and Snell's law.
+
+use lobe::frame::{reflect, refract};
+use lobe::{Eta, Frame, Vec3};
+use proptest::prelude::*;
+use proptest::test_runner::{Config, RngSeed};
+
+fn config() -> Config {
+    Config {
+        cases: 4096,
+        rng_seed: RngSeed::Fixed(0x10be_f4a3),
+        failure_persistence: None,
+        ..Config::default()
+    }
+}
+
+/// Unit directions: uniform on the sphere, plus the poles and points within 1e-7 of them.
+fn unit_vector() -> impl Strategy<Value = Vec3> {
+    let uniform = (-1.0f32..=1.0, 0.0f32..core::f32::consts::TAU).prop_map(|(z, phi)| {
+        let r = (1.0 - z * z).max(0.0).sqrt();
+        Vec3::new(r * phi.cos(), r * phi.sin(), z)
+    });
+    let near_pole = (-1e-6f32..1e-6, -1e-6f32..1e-6, prop::bool::ANY)
+        .prop_map(|(x, y, up)| Vec3::new(x, y, if up { 1.0 } else { -1.0 }).normalize());
+    prop_oneof![
+        4 => uniform,
+        2 => near_pole,
+        1 => Just(Vec3::Z),
+        1 => Just(-Vec3::Z),
+    ]
+}
+
+fn eta() -> impl Strategy<Value = Eta> {
+    (-3.0f32..3.0).prop_map(|e| Eta::new(10f32.powf(e)).unwrap())
+}
+
+proptest! {
+    #![proptest_config(config())]
+
+    #[test]
+    fn frame_is_orthonormal_and_right_handed(n in unit_vector()) {
+        let f = Frame::from_normal(n);
+        for (name, v) in [("x", f.x), ("y", f.y), ("z", f.z)] {
+            prop_assert!((v.length() - 1.0).abs() < 1e-5, "|{}| = {}", name, v.length());
+        }
+        prop_assert!(f.x.dot(f.y).abs() < 1e-5);
+        prop_assert!(f.x.dot(f.z).abs() < 1e-5);
+        prop_assert!(f.y.dot(f.z).abs() < 1e-5);
+        prop_assert!((f.x.cross(f.y) - f.z).length() < 1e-5, "not right-handed: x × y = {:?}", f.x.cross(f.y));
+    }
+
+    #[test]
+    fn frame_round_trips(n in unit_vector(), v in unit_vector()) {
+        let f = Frame::from_normal(n);
+        let local = f.to_local(v);
+        prop_assert!((f.to_world(local) - v).length() < 2e-6);
+        prop_assert!((local.z - n.dot(v)).abs() < 2e-6);
+        prop_assert!((local.length() - 1.0).abs() < 2e-6);
+    }
+
+    #[test]
+    fn reflection_keeps_the_angle_and_the_plane(n in unit_vector(), w in unit_vector()) {
+        let r = reflect(w, n);
+        prop_assert!((r.length() - 1.0).abs() < 1e-5);
+        prop_assert!((r.dot(n) - w.dot(n)).abs() < 1e-5);
+        // Coplanar with w and n, and w + r lies along n.
+        prop_assert!(((w + r).cross(n)).length() < 1e-5);
+    }
+
+    #[test]
+    fn refraction_obeys_snell_and_inverts(w in unit_vector(), eta in eta()) {
+        let n = Vec3::Z;
+        let cos_i = w.z;
+        // η_i / η_t for this side.
+        let eta_it = if cos_i >= 0.0 { 1.0 / eta.get() } else { eta.get() };
+        // sin θ from the tangential components, which keep their digits near the normal.
+        let sin = |v: Vec3| (v.x as f64).hypot(v.y as f64);
+        let sin2_t = (eta_it as f64 * sin(w)).powi(2);
+        match refract(w, n, eta) {
+            None => prop_assert!(sin2_t > 1.0 - 1e-5, "no refraction though sin²θt = {}", sin2_t),
+            Some(t) => {
+                prop_assert!(sin2_t <= 1.0 + 1e-5, "refracted though sin²θt = {}", sin2_t);
+                prop_assert!((t.length() - 1.0).abs() < 1e-4, "|t| = {}", t.length());
+                // The transmitted direction is on the other side (or in the plane at grazing).
+                prop_assert!(t.z * cos_i <= 1e-6);
+                // Snell: η_i sin θ_i = η_t sin θ_t, and the plane of incidence is kept.
+                let (sin_i, sin_t) = (sin(w), sin(t));
+                prop_assert!((eta_it as f64 * sin_i - sin_t).abs() < 1e-4 * (1.0 + eta_it as f64), "Snell: {} vs {}", eta_it as f64 * sin_i, sin_t);
+                prop_assert!((w.x * t.y - w.y * t.x).abs() < 1e-4 * (1.0 + eta_it));
+                // Refracting back returns the original direction. The way back has
+                // sin²θ = sin²θ_i, so skip w within 2° of grazing, where it is itself at the
+                // edge of total internal reflection and f32 cannot decide.
+                if cos_i.abs() > 0.035 && t.z.abs() > 1e-3 {
+                    let back = refract(t, n, eta).expect("the way back never reflects totally");
+                    prop_assert!((back - w).length() < 2e-3 * (1.0 + eta_it), "back = {:?}, w = {:?}", back, w);
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn total_internal_reflection_exactly_past_the_critical_angle() {
+    // Glass to air: critical angle asin(1/1.5) = 41.81°.
+    let eta = Eta::new(1.5).unwrap();
+    let critical = (1.0f32 / 1.5).asin();
+    for (theta, tir) in [(critical - 1e-3, false), (critical + 1e-3, true), (1.2, true), (0.3, false)] {
+        let w = Vec3::new(theta.sin(), 0.0, -theta.cos()); // inside the glass
+        assert_eq!(refract(w, Vec3::Z, eta).is_none(), tir, "θ = {theta}");
+    }
+    // From the outside there is never total internal reflection into a denser medium.
+    for theta in [0.0f32, 0.7, 1.5, 1.570_796] {
+        let w = Vec3::new(theta.sin(), 0.0, theta.cos());
+        assert!(refract(w, Vec3::Z, eta).is_some());
+    }
+    // Normal incidence goes straight through.
+    let t = refract(Vec3::Z, Vec3::Z, eta).unwrap();
+    assert!((t + Vec3::Z).length() < 1e-6);
+}
