@@ -220,6 +220,9 @@ mod tests {
         assert!((f.x - Vec3::X).length() < 1e-6);
         assert!((f.y - Vec3::Y).length() < 1e-6);
         assert_eq!(Frame::from_normal_tangent(n, n), Frame::from_normal(n));
-        assert_eq!(Frame::from_normal_tangent(n, Vec3::NAN), Frame::from_normal(n));
+        assert_eq!(
+            Frame::from_normal_tangent(n, Vec3::NAN),
+            Frame::from_normal(n)
+        );
     }
 }

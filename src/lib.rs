@@ -40,7 +40,7 @@
 //!
 //! * `std` (default): the standard library's float functions and `std::error::Error`.
 //! * `libm`: the `no_std` math path (`--no-default-features --features libm`).
-//! * `verify`: [`verify`](crate::verify), the Monte Carlo estimators and statistical tests.
+//! * `verify`: [`verify`], the Monte Carlo estimators and statistical tests.
 #![no_std]
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
@@ -55,11 +55,17 @@ compile_error!("lobe needs a float library: enable the `std` (default) or the `l
 pub mod frame;
 pub mod fresnel;
 pub mod math;
+
 pub mod param;
 pub mod sampling;
 pub mod spectrum;
 #[cfg(feature = "verify")]
 pub mod verify;
+
+/// The README's examples, compiled and run as doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;
 
 pub use frame::Frame;
 pub use glam::{Vec2, Vec3, Vec4};

@@ -1,0 +1,855 @@
+//! Pearson's chi-square goodness-of-fit test of a direction sampler against its density.
+
+use super::gamma::chi2_survival;
+use super::rng::Pcg32;
+use glam::{Vec2, Vec3};
+use std::f64::consts::TAU;
+use std::fmt;
+use std::vec;
+use std::vec::Vec;
+
+/// The PCG stream that [`chi2_sphere`] draws from (the seed comes from the configuration).
+const STREAM: u64 = 0;
+/// A sample whose length is further than this from 1 is invalid.
+const UNIT_TOLERANCE: f64 = 1e-3;
+/// The quadrature aims at an error in each expected count below this fraction of the
+/// count's Poisson standard deviation `√E`, which inflates the expected statistic by at most
+/// about its square (`0.0025`) per bin. The same goes for the no-sample bin, whose expected
+/// count is what the other bins leave over, so that their errors add up in it.
+const STAT_TOL: f64 = 0.05;
+/// The quadrature never aims at a relative accuracy finer than this, which `f32` densities
+/// cannot deliver anyway.
+const REL_TOL_FLOOR: f64 = 1e-7;
+/// Nor at an absolute accuracy finer than this many expected samples per bin.
+const ABS_TOL_SAMPLES: f64 = 1e-3;
+/// The inner quadrature (over `φ`) aims at this fraction of the outer tolerance, so that
+/// its error does not drive the outer refinement.
+const INNER_TOL_FRACTION: f64 = 0.1;
+/// Maximum number of bisections of a base cell, on each axis: `2⁻¹²` of a base cell
+/// locates a jump in the density to far below one sample.
+const MAX_DEPTH: u32 = 12;
+/// Density evaluations allowed per bin before refinement stops (reached only by densities
+/// whose `f32` rounding noise exceeds the tolerance, where refining would not help: the
+/// noise averages out of the integral but not out of the error estimate).
+const BIN_EVAL_BUDGET: u64 = 100_000;
+/// The no-sample bin is left out when it expects fewer samples than this and gets none.
+const NO_SAMPLE_NEGLIGIBLE: f64 = 0.01;
+
+/// Settings of [`chi2_sphere`].
+///
+/// Build one with struct update syntax over [`Default`]:
+///
+/// ```
+/// use lobe::verify::{sidak, Chi2Config};
+/// let config = Chi2Config {
+///     samples: 200_000,
+///     significance: sidak(0.01, 4), // one of four tests in this file
+///     ..Chi2Config::default()
+/// };
+/// assert_eq!(config.theta_bins, 16);
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct Chi2Config {
+    /// Bins in `cos θ ∈ [−1, 1]`, equal width (so equal area). An even number puts a bin
+    /// edge on the horizon `z = 0`, where hemispherical densities jump. Default 16.
+    pub theta_bins: usize,
+    /// Bins in `φ ∈ [0, 2π)`, equal width. Default 32.
+    pub phi_bins: usize,
+    /// Number of samples drawn. Default 1 000 000.
+    pub samples: usize,
+    /// Seed of the [`Pcg32`] that draws the sampler's random numbers. Default 1.
+    pub seed: u64,
+    /// The test rejects when the p-value is below this. Default 0.01. A caller running
+    /// several tests should pass the Šidák-corrected level [`sidak(0.01, n)`](super::sidak)
+    /// so that the chance of any false rejection stays at 1 %.
+    pub significance: f64,
+    /// Bins expecting fewer samples than this are pooled (see [`chi2_sphere`]). Default 5,
+    /// the usual rule of thumb for Pearson's approximation.
+    pub min_expected: f64,
+    /// Base quadrature grid per bin: each bin is split into `integration_res ×
+    /// integration_res` cells in `(cos θ, φ)`, and each cell is integrated by adaptive
+    /// Simpson quadrature. A lobe narrower than a base cell can be missed between its
+    /// nodes (and then rejected: see [`chi2_sphere`]); raise this for very sharp
+    /// densities. Default 8.
+    pub integration_res: usize,
+}
+
+impl Default for Chi2Config {
+    fn default() -> Self {
+        Self {
+            theta_bins: 16,
+            phi_bins: 32,
+            samples: 1_000_000,
+            seed: 1,
+            significance: 0.01,
+            min_expected: 5.0,
+            integration_res: 8,
+        }
+    }
+}
+
+/// A bin of the chi-square test.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Chi2Bin {
+    /// The direction bin with `cos θ ∈ [−1 + 2 theta / T, −1 + 2 (theta + 1) / T)` and
+    /// `φ ∈ [2π phi / P, 2π (phi + 1) / P)`.
+    Direction {
+        /// The `cos θ` index, from `0` (around `−z`) to `theta_bins − 1` (around `+z`).
+        theta: usize,
+        /// The `φ` index.
+        phi: usize,
+    },
+    /// The samples for which the sampler returned `None`, expected `N (1 − ∫ pdf)`.
+    NoSample,
+    /// The pool of low-count bins (merged into the regular bin of smallest expectation
+    /// when the pool alone expects fewer than `min_expected` samples).
+    Pooled,
+}
+
+impl fmt::Display for Chi2Bin {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::Direction { theta, phi } => write!(f, "bin (θ {theta}, φ {phi})"),
+            Self::NoSample => f.write_str("the no-sample bin"),
+            Self::Pooled => f.write_str("the pooled bin"),
+        }
+    }
+}
+
+/// The observed and expected counts of one bin.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Chi2Residual {
+    /// Which bin.
+    pub bin: Chi2Bin,
+    /// Samples that landed in it.
+    pub observed: u64,
+    /// Samples the density predicts for it, `N ∫_bin pdf dω`.
+    pub expected: f64,
+}
+
+impl Chi2Residual {
+    /// The bin's term of Pearson's statistic, `(O − E)² / E` (`∞` for `E = 0 < O`).
+    #[must_use]
+    pub fn contribution(&self) -> f64 {
+        let d = self.observed as f64 - self.expected;
+        if d == 0.0 { 0.0 } else { d * d / self.expected }
+    }
+}
+
+/// The outcome of [`chi2_sphere`]. [`passed`](Self::passed) is the verdict; the other fields
+/// say why, and `Display` prints them in two or three lines.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Chi2Report {
+    /// Pearson's statistic `Σ (O − E)² / E` over the bins after pooling.
+    pub statistic: f64,
+    /// Degrees of freedom: the number of bins after pooling, minus one.
+    pub dof: usize,
+    /// `P(χ²_dof ≥ statistic)`, [`chi2_survival`](super::chi2_survival); NaN when
+    /// `dof = 0`.
+    pub p_value: f64,
+    /// The significance level the test was run at.
+    pub significance: f64,
+    /// Samples drawn, `N`.
+    pub samples: usize,
+    /// Samples for which the sampler returned `None`.
+    pub rejected_samples: usize,
+    /// `N (1 − ∫ pdf dω)`: how many `None`s the density predicts (it may integrate to less
+    /// than one when the sampler can fail).
+    pub expected_rejected: f64,
+    /// The density's integral over the sphere, as computed by the quadrature.
+    pub pdf_integral: f64,
+    /// The quadrature's estimate of its own absolute error in `pdf_integral` (the sum of
+    /// the adaptive error estimates; an overestimate for densities with rounding noise).
+    pub integration_error: f64,
+    /// Samples that were not finite or not of unit length (`|‖w‖ − 1| > 10⁻³`): an outright
+    /// failure.
+    pub invalid_samples: usize,
+    /// Samples in bins over which the density integrates to zero: an outright failure (the
+    /// sampler produces directions its pdf says are impossible).
+    pub zero_bin_hits: usize,
+    /// Density evaluations that were negative, infinite or NaN (counted as zero in the
+    /// integral): an outright failure.
+    pub invalid_pdf_values: usize,
+    /// Number of low-count bins that were pooled.
+    pub pooled_bins: usize,
+    /// Number of bins in the statistic, after pooling (`dof + 1`).
+    pub bins: usize,
+    /// How many times the quadrature evaluated the density.
+    pub pdf_evaluations: u64,
+    /// The bin that speaks most against the density: the zero-density bin with the most
+    /// hits if there is one, else the bin with the largest term `(O − E)² / E`.
+    pub worst: Option<Chi2Residual>,
+}
+
+impl Chi2Report {
+    /// Whether the sampler matches the density: no invalid sample, no sample where the
+    /// density is zero, no invalid density value, at least one degree of freedom, and
+    /// `p_value ≥ significance`.
+    #[must_use]
+    pub fn passed(&self) -> bool {
+        self.invalid_samples == 0
+            && self.zero_bin_hits == 0
+            && self.invalid_pdf_values == 0
+            && self.dof >= 1
+            && self.p_value >= self.significance
+    }
+}
+
+impl fmt::Display for Chi2Report {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        writeln!(
+            f,
+            "chi-square {:.2} with {} dof, p = {:.4e} (significance {:.4e}): {}",
+            self.statistic,
+            self.dof,
+            self.p_value,
+            self.significance,
+            if self.passed() { "passed" } else { "FAILED" }
+        )?;
+        write!(
+            f,
+            "  {} samples: {} rejected (expected {:.1}), {} invalid, {} in zero-pdf bins; \
+             {} invalid pdf values; {} low-count bins pooled; integral of pdf {:.6} \
+             (quadrature error ~{:.0e})",
+            self.samples,
+            self.rejected_samples,
+            self.expected_rejected,
+            self.invalid_samples,
+            self.zero_bin_hits,
+            self.invalid_pdf_values,
+            self.pooled_bins,
+            self.pdf_integral,
+            self.integration_error
+        )?;
+        if let Some(w) = &self.worst {
+            write!(
+                f,
+                "\n  largest residual: {}: observed {}, expected {:.1}",
+                w.bin, w.observed, w.expected
+            )?;
+        }
+        Ok(())
+    }
+}
+
+/// Pearson's chi-square test of a direction sampler against its solid-angle density.
+///
+/// Draws `config.samples` points `u ∈ [0, 1)²` from [`Pcg32::new(config.seed, 0)`](Pcg32),
+/// maps each through `sampler`, and compares the histogram of the directions with the counts
+/// the density predicts. See [`chi2_sphere_rng`] for samplers that need more random numbers.
+///
+/// * **Bins.** `theta_bins × phi_bins` equal-area bins in `(cos θ, φ)`, plus one bin for the
+///   samples that returned `None`, which expects `N (1 − ∫ pdf)`: a sampler that fails more
+///   often than its density admits is caught there.
+/// * **Expected counts.** `N ∫_bin pdf dω`, integrated in `(cos θ, φ)`, where
+///   `dω = d(cos θ) dφ` exactly. A first pass applies Simpson's product rule on an
+///   `integration_res × integration_res` grid of cells per bin; a second pass integrates
+///   each cell by nested adaptive Simpson quadrature (over `φ` inside, over `cos θ`
+///   outside; Lyness 1969), which follows jumps such as a cone's rim. The tolerance is
+///   statistical: each expected count, the no-sample bin's included, is aimed at an error
+///   below `0.05 √E` (and never finer than `1e-7` relative), so the quadrature adds at
+///   most a few thousandths to each term of the statistic. The density is evaluated in
+///   `f32` at directions built from `f64` angles.
+/// * **Pooling.** Bins expecting fewer than `min_expected` samples are summed into one
+///   pooled bin. If that pool still expects fewer than `min_expected`, it is merged into
+///   the regular bin with the smallest expectation (or, if there is none, kept as it is).
+///   The no-sample bin takes part like any other bin; it is left out when it neither
+///   expects nor receives anything.
+/// * **Outright failures.** A non-finite or non-unit sample, a sample in a bin where the
+///   density integrates to zero, and a negative or non-finite density value each fail the
+///   test whatever the statistic; they are counted in the report.
+/// * **Verdict.** `p = Q(dof / 2, χ² / 2)` with `dof = bins − 1`;
+///   [`Chi2Report::passed`] iff there is no outright failure, `dof ≥ 1`, and
+///   `p ≥ significance`.
+///
+/// The test is deterministic for a given configuration. It can reject a correct sampler
+/// with probability `significance`, by chance; and it can reject one whose density has a
+/// feature narrower than the quadrature grid, which the quadrature then misses. It does
+/// not accept a wrong one for either reason. Its power is limited by the bins: a lobe that
+/// fits in a few bins is tested on a few degrees of freedom only (and one inside a single
+/// bin on none, which does not pass), so test sharp lobes with more `theta_bins` or
+/// `phi_bins`, and more samples.
+///
+/// # Panics
+///
+/// If `theta_bins`, `phi_bins`, `samples` or `integration_res` is zero.
+///
+/// ```
+/// use lobe::verify::{chi2_sphere, Chi2Config};
+/// use lobe::sampling::{uniform_sphere, uniform_sphere_pdf};
+///
+/// let config = Chi2Config { samples: 100_000, ..Chi2Config::default() };
+/// let report = chi2_sphere(|u| Some(uniform_sphere(u)), |_| f64::from(uniform_sphere_pdf()), &config);
+/// assert!(report.passed(), "{report}");
+/// ```
+pub fn chi2_sphere(
+    mut sampler: impl FnMut(Vec2) -> Option<Vec3>,
+    pdf: impl Fn(Vec3) -> f64,
+    config: &Chi2Config,
+) -> Chi2Report {
+    chi2_sphere_rng(|rng| sampler(rng.next_vec2()), pdf, config)
+}
+
+/// [`chi2_sphere`] for a sampler that draws its own random numbers from the test's
+/// generator, for instance a BSDF sampler that needs a third number to choose a lobe.
+///
+/// ```
+/// use lobe::verify::{chi2_sphere_rng, Chi2Config};
+/// use lobe::sampling::{uniform_hemisphere, uniform_sphere_pdf};
+/// use lobe::Vec3;
+///
+/// // Upper or lower hemisphere with a coin flip: uniform on the sphere.
+/// let sampler = |rng: &mut lobe::verify::Pcg32| {
+///     let w = uniform_hemisphere(rng.next_vec2());
+///     Some(if rng.next_f32() < 0.5 { w } else { Vec3::new(w.x, w.y, -w.z) })
+/// };
+/// let config = Chi2Config { samples: 100_000, ..Chi2Config::default() };
+/// let report = chi2_sphere_rng(sampler, |_| f64::from(uniform_sphere_pdf()), &config);
+/// assert!(report.passed(), "{report}");
+/// ```
+pub fn chi2_sphere_rng(
+    mut sampler: impl FnMut(&mut Pcg32) -> Option<Vec3>,
+    pdf: impl Fn(Vec3) -> f64,
+    config: &Chi2Config,
+) -> Chi2Report {
+    assert!(
+        config.theta_bins > 0 && config.phi_bins > 0,
+        "chi2_sphere needs at least one bin on each axis"
+    );
+    assert!(config.samples > 0, "chi2_sphere needs at least one sample");
+    assert!(
+        config.integration_res > 0,
+        "chi2_sphere needs integration_res ≥ 1"
+    );
+    let (nt, np) = (config.theta_bins, config.phi_bins);
+
+    // Histogram the samples.
+    let mut observed = vec![0_u64; nt * np];
+    let mut rejected = 0_usize;
+    let mut invalid = 0_usize;
+    let mut rng = Pcg32::new(config.seed, STREAM);
+    for _ in 0..config.samples {
+        let Some(w) = sampler(&mut rng) else {
+            rejected += 1;
+            continue;
+        };
+        let (x, y, z) = (f64::from(w.x), f64::from(w.y), f64::from(w.z));
+        let len = (x * x + y * y + z * z).sqrt();
+        if !w.is_finite() || (len - 1.0).abs() > UNIT_TOLERANCE {
+            invalid += 1;
+            continue;
+        }
+        let t = ((0.5 * (z / len + 1.0) * nt as f64) as usize).min(nt - 1);
+        let phi = y.atan2(x);
+        let phi = if phi < 0.0 { phi + TAU } else { phi };
+        let p = ((phi / TAU * np as f64) as usize).min(np - 1);
+        observed[t * np + p] += 1;
+    }
+
+    // Expected counts: a first pass on the base grid gives each bin's rough mass, which
+    // sets the tolerance of the adaptive second pass.
+    let n = config.samples as f64;
+    let mut quad = Quadrature {
+        pdf: &pdf,
+        res: config.integration_res,
+        invalid: 0,
+        evals: 0,
+        limit: 0,
+        error: 0.0,
+    };
+    let dc = 2.0 / nt as f64;
+    let dphi = TAU / np as f64;
+    let bin_bounds = |t: usize, p: usize| {
+        let c0 = -1.0 + dc * t as f64;
+        let c1 = if t + 1 == nt { 1.0 } else { c0 + dc };
+        let phi0 = dphi * p as f64;
+        let phi1 = if p + 1 == np { TAU } else { phi0 + dphi };
+        (c0, c1, phi0, phi1)
+    };
+    let rough: Vec<f64> = (0..nt * np)
+        .map(|k| {
+            let (c0, c1, phi0, phi1) = bin_bounds(k / np, k % np);
+            quad.grid(c0, c1, phi0, phi1)
+        })
+        .collect();
+    let rough_total: f64 = rough.iter().sum();
+    let rough_missing = (1.0 - rough_total).max(0.0);
+    quad.invalid = 0;
+
+    let mut integral = 0.0;
+    let mut cells: Vec<Chi2Residual> = Vec::with_capacity(nt * np + 1);
+    let mut zero_bin_hits = 0_usize;
+    let mut worst_zero: Option<Chi2Residual> = None;
+    // Relative tolerance for the no-sample bin: the bins' errors add up in it, so each bin
+    // gets the share of STAT_TOL √(N m) (m the missing mass, at least one sample's worth)
+    // that its mass is of the total.
+    let rel_tol_missing = if rough_total > 0.0 {
+        STAT_TOL * (rough_missing.max(1.0 / n) / n).sqrt() / rough_total
+    } else {
+        f64::INFINITY
+    };
+    for (k, &p0) in rough.iter().enumerate() {
+        let (t, p) = (k / np, k % np);
+        let (c0, c1, phi0, phi1) = bin_bounds(t, p);
+        // The bin's own count: |N error| ≤ STAT_TOL √(N p0).
+        let tol_own = STAT_TOL * (p0.max(1.0 / n) / n).sqrt();
+        let tol = tol_own
+            .min(rel_tol_missing * p0)
+            .max(REL_TOL_FLOOR * p0)
+            .max(ABS_TOL_SAMPLES / n);
+        let mass = quad.bin(c0, c1, phi0, phi1, tol);
+        integral += mass;
+        let cell = Chi2Residual {
+            bin: Chi2Bin::Direction { theta: t, phi: p },
+            observed: observed[k],
+            expected: n * mass,
+        };
+        if mass > 0.0 {
+            cells.push(cell);
+        } else if cell.observed > 0 {
+            zero_bin_hits += cell.observed as usize;
+            if worst_zero.is_none_or(|w| w.observed < cell.observed) {
+                worst_zero = Some(cell);
+            }
+        }
+    }
+    let expected_rejected = n * (1.0 - integral).max(0.0);
+    if expected_rejected >= NO_SAMPLE_NEGLIGIBLE || rejected > 0 {
+        cells.push(Chi2Residual {
+            bin: Chi2Bin::NoSample,
+            observed: rejected as u64,
+            expected: expected_rejected,
+        });
+    }
+
+    // Pool the low-count bins.
+    let (mut bins, small): (Vec<_>, Vec<_>) = cells
+        .into_iter()
+        .partition(|c| c.expected >= config.min_expected);
+    if !small.is_empty() {
+        let pool = Chi2Residual {
+            bin: Chi2Bin::Pooled,
+            observed: small.iter().map(|c| c.observed).sum(),
+            expected: small.iter().map(|c| c.expected).sum(),
+        };
+        let smallest = bins
+            .iter_mut()
+            .min_by(|a, b| a.expected.total_cmp(&b.expected));
+        match smallest {
+            Some(target) if pool.expected < config.min_expected => {
+                target.bin = Chi2Bin::Pooled;
+                target.observed += pool.observed;
+                target.expected += pool.expected;
+            }
+            _ => bins.push(pool),
+        }
+    }
+
+    let statistic: f64 = bins.iter().map(Chi2Residual::contribution).sum();
+    let dof = bins.len().saturating_sub(1);
+    let worst = worst_zero.or_else(|| {
+        bins.iter()
+            .copied()
+            .max_by(|a, b| a.contribution().total_cmp(&b.contribution()))
+    });
+    Chi2Report {
+        statistic,
+        dof,
+        p_value: chi2_survival(statistic, dof),
+        significance: config.significance,
+        samples: config.samples,
+        rejected_samples: rejected,
+        expected_rejected,
+        pdf_integral: integral,
+        integration_error: quad.error,
+        invalid_samples: invalid,
+        zero_bin_hits,
+        invalid_pdf_values: quad.invalid,
+        pooled_bins: small.len(),
+        bins: bins.len(),
+        pdf_evaluations: quad.evals,
+        worst,
+    }
+}
+
+/// Nested adaptive Simpson quadrature of a density over `(cos θ, φ)` rectangles.
+struct Quadrature<'p, P> {
+    /// The density.
+    pdf: &'p P,
+    /// Base cells per bin and axis.
+    res: usize,
+    /// Density values that were negative or not finite.
+    invalid: usize,
+    /// Density evaluations so far.
+    evals: u64,
+    /// Refinement stops once `evals` reaches this (the current bin's budget).
+    limit: u64,
+    /// Sum of the outer quadrature's error estimates so far.
+    error: f64,
+}
+
+/// Simpson's rule on `[a, b]` from the values at the ends and the midpoint.
+#[inline]
+fn simpson(a: f64, b: f64, fa: f64, fm: f64, fb: f64) -> f64 {
+    (b - a) / 6.0 * (fa + 4.0 * fm + fb)
+}
+
+impl<P: Fn(Vec3) -> f64> Quadrature<'_, P> {
+    /// The density at `(cos θ, φ)`; invalid values are counted and read as zero.
+    fn density(&mut self, c: f64, phi: f64) -> f64 {
+        self.evals += 1;
+        let s = (1.0 - c * c).max(0.0).sqrt();
+        let (sp, cp) = phi.sin_cos();
+        let w = Vec3::new((s * cp) as f32, (s * sp) as f32, c as f32);
+        let v = (self.pdf)(w);
+        if v.is_finite() && v >= 0.0 {
+            v
+        } else {
+            self.invalid += 1;
+            0.0
+        }
+    }
+
+    /// `∫∫ pdf d(cos θ) dφ` over one bin by the composite Simpson product rule on the base
+    /// grid (`2 res + 1` nodes per axis), without refinement.
+    fn grid(&mut self, c0: f64, c1: f64, phi0: f64, phi1: f64) -> f64 {
+        let m = 2 * self.res;
+        // Composite Simpson weights 1, 4, 2, 4, …, 4, 1 (times h / 3).
+        let weight = |i: usize| match i {
+            0 => 1.0,
+            i if i == m => 1.0,
+            i if i % 2 == 1 => 4.0,
+            _ => 2.0,
+        };
+        let (hc, hp) = ((c1 - c0) / m as f64, (phi1 - phi0) / m as f64);
+        let mut sum = 0.0;
+        for i in 0..=m {
+            let c = if i == m { c1 } else { c0 + hc * i as f64 };
+            for j in 0..=m {
+                let phi = if j == m { phi1 } else { phi0 + hp * j as f64 };
+                sum += weight(i) * weight(j) * self.density(c, phi);
+            }
+        }
+        sum * (hc / 3.0) * (hp / 3.0)
+    }
+
+    /// `∫∫ pdf d(cos θ) dφ` over one bin, aiming at an absolute error below `tol`.
+    fn bin(&mut self, c0: f64, c1: f64, phi0: f64, phi1: f64, tol: f64) -> f64 {
+        self.limit = self.evals + BIN_EVAL_BUDGET;
+        // The inner integral is multiplied by at most the bin's width in cos θ.
+        let inner_tol = INNER_TOL_FRACTION * tol / (c1 - c0);
+        let mut outer_error = 0.0;
+        let (mut inner_error, mut inner_count) = (0.0, 0_u64);
+        let mass = self.composite(c0, c1, tol, &mut outer_error, &mut |q: &mut Self, c| {
+            inner_count += 1;
+            q.composite(
+                phi0,
+                phi1,
+                inner_tol,
+                &mut inner_error,
+                &mut |q: &mut Self, phi| q.density(c, phi),
+            )
+        });
+        // The outer estimate misses a bias shared by all inner integrals; add their mean
+        // error over the bin's width.
+        self.error += outer_error + inner_error / inner_count.max(1) as f64 * (c1 - c0);
+        mass
+    }
+
+    /// `∫ f` over `[a, b]` to an absolute tolerance `tol`: `res` equal cells, each refined
+    /// adaptively with an equal share of the tolerance. Adds the error estimate to `error`.
+    fn composite<F: FnMut(&mut Self, f64) -> f64>(
+        &mut self,
+        a: f64,
+        b: f64,
+        tol: f64,
+        error: &mut f64,
+        f: &mut F,
+    ) -> f64 {
+        let h = (b - a) / self.res as f64;
+        let cell_tol = tol / self.res as f64;
+        let mut fa = f(self, a);
+        let mut sum = 0.0;
+        for k in 0..self.res {
+            let x0 = a + h * k as f64;
+            let x1 = if k + 1 == self.res { b } else { x0 + h };
+            let fm = f(self, 0.5 * (x0 + x1));
+            let fb = f(self, x1);
+            let whole = simpson(x0, x1, fa, fm, fb);
+            sum += self.refine(f, (x0, x1), [fa, fm, fb], whole, cell_tol, MAX_DEPTH, error);
+            fa = fb;
+        }
+        sum
+    }
+
+    /// Adaptive Simpson (Lyness 1969): accept the two half-interval estimates when they
+    /// differ from the whole-interval estimate by at most `15 tol` (Simpson's error shrinks
+    /// sixteenfold per halving, so the difference is about 15 times the halves' error),
+    /// else recurse with `tol / 2` on each half. Returns the plain sum of the halves (no
+    /// Richardson term), so a non-negative integrand gives a non-negative result that is
+    /// zero only when every node is.
+    #[allow(clippy::too_many_arguments)]
+    fn refine<F: FnMut(&mut Self, f64) -> f64>(
+        &mut self,
+        f: &mut F,
+        (a, b): (f64, f64),
+        [fa, fm, fb]: [f64; 3],
+        whole: f64,
+        tol: f64,
+        depth: u32,
+        error: &mut f64,
+    ) -> f64 {
+        let m = 0.5 * (a + b);
+        let flm = f(self, 0.5 * (a + m));
+        let frm = f(self, 0.5 * (m + b));
+        let left = simpson(a, m, fa, flm, fm);
+        let right = simpson(m, b, fm, frm, fb);
+        let diff = (left + right - whole).abs();
+        if diff <= 15.0 * tol || depth == 0 || self.evals >= self.limit {
+            *error += diff / 15.0;
+            return left + right;
+        }
+        self.refine(f, (a, m), [fa, flm, fm], left, 0.5 * tol, depth - 1, error)
+            + self.refine(f, (m, b), [fm, frm, fb], right, 0.5 * tol, depth - 1, error)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::f64::consts::PI;
+    use std::string::ToString;
+
+    fn small_config() -> Chi2Config {
+        Chi2Config {
+            theta_bins: 8,
+            phi_bins: 16,
+            samples: 50_000,
+            ..Chi2Config::default()
+        }
+    }
+
+    /// Uniform on the sphere by normalising a rejection-sampled point of the ball: an
+    /// independent sampler, not the one in `sampling`.
+    fn ball_sampler(rng: &mut Pcg32) -> Option<Vec3> {
+        loop {
+            let p = Vec3::new(rng.next_f32(), rng.next_f32(), rng.next_f32()) * 2.0 - Vec3::ONE;
+            let l2 = p.length_squared();
+            if l2 > 1e-4 && l2 <= 1.0 {
+                return Some(p / l2.sqrt());
+            }
+        }
+    }
+
+    #[test]
+    fn quadrature_integrates_known_densities() {
+        let config = small_config();
+        // ∫ 1/(4π) dω = 1; ∫ max(z, 0)/π dω = 1; ∫ 3/(2π) z² [z > 0] dω = 1.
+        let densities: [&dyn Fn(Vec3) -> f64; 3] = [
+            &|_| 1.0 / (4.0 * PI),
+            &|w| f64::from(w.z).max(0.0) / PI,
+            &|w| {
+                if w.z > 0.0 {
+                    1.5 / PI * f64::from(w.z).powi(2)
+                } else {
+                    0.0
+                }
+            },
+        ];
+        for pdf in densities {
+            let r = chi2_sphere_rng(
+                ball_sampler,
+                pdf,
+                &Chi2Config {
+                    samples: 10,
+                    ..config.clone()
+                },
+            );
+            assert!(
+                (r.pdf_integral - 1.0).abs() < 1e-6,
+                "∫ pdf = {}",
+                r.pdf_integral
+            );
+        }
+        // A cone of half-angle 60° that is not aligned with the bins: ∫ = 2π (1 − ½) = π.
+        let cone = |w: Vec3| if w.z >= 0.5 { 1.0 } else { 0.0 };
+        let r = chi2_sphere_rng(
+            ball_sampler,
+            cone,
+            &Chi2Config {
+                theta_bins: 7,
+                samples: 10,
+                ..config
+            },
+        );
+        assert!(
+            (r.pdf_integral - PI).abs() < 1e-5 * PI,
+            "∫ = {}",
+            r.pdf_integral
+        );
+    }
+
+    #[test]
+    fn independent_uniform_sampler_passes() {
+        let r = chi2_sphere_rng(ball_sampler, |_| 1.0 / (4.0 * PI), &small_config());
+        assert!(r.passed(), "{r}");
+        assert_eq!(r.dof, 8 * 16 - 1);
+        assert_eq!((r.pooled_bins, r.rejected_samples), (0, 0));
+    }
+
+    #[test]
+    fn same_seed_same_report() {
+        let a = chi2_sphere_rng(ball_sampler, |_| 1.0 / (4.0 * PI), &small_config());
+        let b = chi2_sphere_rng(ball_sampler, |_| 1.0 / (4.0 * PI), &small_config());
+        assert_eq!(a, b);
+        let c = chi2_sphere_rng(
+            ball_sampler,
+            |_| 1.0 / (4.0 * PI),
+            &Chi2Config {
+                seed: 2,
+                ..small_config()
+            },
+        );
+        assert_ne!(a.statistic, c.statistic);
+    }
+
+    #[test]
+    fn invalid_samples_fail_outright() {
+        let mut k = 0_u32;
+        let sampler = |rng: &mut Pcg32| {
+            k += 1;
+            let w = ball_sampler(rng)?;
+            Some(match k % 1000 {
+                0 => w * 1.01,
+                500 => Vec3::NAN,
+                _ => w,
+            })
+        };
+        let r = chi2_sphere_rng(sampler, |_| 1.0 / (4.0 * PI), &small_config());
+        assert_eq!(r.invalid_samples, 100);
+        assert!(!r.passed());
+    }
+
+    #[test]
+    fn invalid_pdf_values_fail_outright() {
+        let r = chi2_sphere_rng(
+            ball_sampler,
+            |w| {
+                if w.x > 0.9 {
+                    f64::NAN
+                } else {
+                    1.0 / (4.0 * PI)
+                }
+            },
+            &small_config(),
+        );
+        assert!(r.invalid_pdf_values > 0);
+        assert!(!r.passed());
+    }
+
+    #[test]
+    fn pdf_missing_a_region_is_a_zero_bin_hit() {
+        // The density claims nothing below z = −0.5, the sampler goes there anyway.
+        let r = chi2_sphere_rng(
+            ball_sampler,
+            |w| if w.z >= -0.5 { 1.0 / (3.0 * PI) } else { 0.0 },
+            &small_config(),
+        );
+        // The ring cos θ ∈ [−1, −0.75) gets 1/8 of the samples, about 6250, and its density
+        // is zero at every node. (The ring above it touches z = −0.5, where the density is
+        // not zero, so it expects a sliver and is pooled instead.)
+        assert!(r.zero_bin_hits > 5_000, "{r}");
+        assert!(
+            matches!(
+                r.worst,
+                Some(Chi2Residual {
+                    bin: Chi2Bin::Direction { theta: 0, .. },
+                    expected: 0.0,
+                    ..
+                })
+            ),
+            "{r}"
+        );
+        assert!(!r.passed());
+    }
+
+    #[test]
+    fn low_count_bins_are_pooled() {
+        // 16 × 32 bins, 2000 samples: about 3.9 expected per bin, all pooled into one bin;
+        // with no regular bin left, the pool stands alone and the test has no dof.
+        let r = chi2_sphere_rng(
+            ball_sampler,
+            |_| 1.0 / (4.0 * PI),
+            &Chi2Config {
+                samples: 2000,
+                ..Chi2Config::default()
+            },
+        );
+        assert_eq!((r.pooled_bins, r.bins, r.dof), (512, 1, 0));
+        assert!(r.p_value.is_nan() && !r.passed());
+        // A density with a faint tail: the tail bins are pooled, the rest stand.
+        let faint = |w: Vec3| {
+            let z = f64::from(w.z);
+            if z > 0.0 {
+                0.999 * z / PI
+            } else {
+                0.001 * (-z) / PI
+            }
+        };
+        let faint_sampler = |rng: &mut Pcg32| loop {
+            // Cosine-weighted by rejection from the uniform sphere, then flipped below the
+            // horizon with probability 0.001.
+            let w = ball_sampler(rng)?;
+            let up = Vec3::new(w.x, w.y, w.z.abs());
+            if rng.next_f32() < up.z {
+                let below = rng.next_f32() < 0.001;
+                return Some(if below {
+                    Vec3::new(up.x, up.y, -up.z)
+                } else {
+                    up
+                });
+            }
+        };
+        let r = chi2_sphere_rng(faint_sampler, faint, &small_config());
+        // The 64 lower bins expect 50 samples between them: pooled into one bin of their
+        // own, next to the 64 upper bins.
+        assert_eq!((r.pooled_bins, r.bins, r.dof), (64, 65, 64), "{r}");
+        assert!(r.passed(), "{r}");
+        // Against the density without its tail, the flipped samples are zero-bin hits.
+        let r = chi2_sphere_rng(
+            faint_sampler,
+            |w| f64::from(w.z).max(0.0) / PI,
+            &small_config(),
+        );
+        assert!(r.zero_bin_hits > 0 && !r.passed(), "{r}");
+    }
+
+    #[test]
+    fn no_sample_bin_expects_the_missing_mass() {
+        // A uniform sampler that fails 30 % of the time, against the density 0.7 / (4π).
+        let sampler = |rng: &mut Pcg32| {
+            let w = ball_sampler(rng)?;
+            (rng.next_f32() >= 0.3).then_some(w)
+        };
+        let config = small_config();
+        let r = chi2_sphere_rng(sampler, |_| 0.7 / (4.0 * PI), &config);
+        assert!(r.passed(), "{r}");
+        // The expectation is exact to far below its Poisson deviation √(0.3 N) ≈ 122.
+        let want = 0.3 * config.samples as f64;
+        assert!((r.expected_rejected - want).abs() < 0.01, "{r}");
+        assert_eq!(r.dof, 8 * 16);
+        // The same sampler against the full density: rejected.
+        let r = chi2_sphere_rng(sampler, |_| 1.0 / (4.0 * PI), &config);
+        assert!(!r.passed() && r.p_value < 1e-100, "{r}");
+    }
+
+    #[test]
+    fn display_mentions_the_verdict() {
+        let r = chi2_sphere_rng(ball_sampler, |_| 1.0 / (4.0 * PI), &small_config());
+        let text = r.to_string();
+        assert!(
+            text.contains("passed") && text.contains("127 dof"),
+            "{text}"
+        );
+    }
+}

@@ -1,0 +1,215 @@
+//! Every warp in `lobe::sampling` against its density, by Pearson's chi-square test at one
+//! million samples; and deliberately wrong densities and samplers, which the same test must
+//! reject, to show that it can fail.
+//!
+//! The passing tests share a family-wise significance of 1 %, Šidák-corrected over the
+//! number of chi-square runs expected to pass. The failing ones assert a rejection at that
+//! same corrected level (and print their p-values, as the passing ones do, with
+//! `--nocapture`).
+
+use lobe::sampling::{
+    cosine_hemisphere, cosine_hemisphere_pdf, square_to_disk_concentric, uniform_cone,
+    uniform_cone_pdf, uniform_hemisphere, uniform_hemisphere_pdf, uniform_sphere,
+    uniform_sphere_pdf,
+};
+use lobe::verify::{Chi2Bin, Chi2Config, Chi2Report, chi2_sphere, sidak};
+use lobe::{Vec2, Vec3};
+
+/// Samples per chi-square run.
+const SAMPLES: usize = 1_000_000;
+/// Chi-square runs in this file that are expected to pass: cosine hemisphere, uniform
+/// hemisphere, uniform sphere, concentric disk, three cones, and the half-failing sampler
+/// against its halved density.
+const PASSING_RUNS: usize = 8;
+
+/// The configuration for one run: default bins, a seed of its own, corrected significance.
+fn config(seed: u64) -> Chi2Config {
+    Chi2Config {
+        samples: SAMPLES,
+        seed,
+        significance: sidak(0.01, PASSING_RUNS),
+        ..Chi2Config::default()
+    }
+}
+
+fn assert_passes(name: &str, report: &Chi2Report) {
+    println!("{name}: {report}");
+    assert!(report.passed(), "{name} rejected:\n{report}");
+    assert_eq!(report.invalid_samples, 0, "{name}");
+    assert_eq!(report.zero_bin_hits, 0, "{name}");
+    assert!(
+        (report.pdf_integral - 1.0).abs() < 1e-5,
+        "{name}: ∫ pdf = {}",
+        report.pdf_integral
+    );
+}
+
+fn assert_rejected(name: &str, report: &Chi2Report) {
+    println!("{name}: {report}");
+    assert!(!report.passed(), "{name} was accepted:\n{report}");
+}
+
+/// `pdf` on the upper hemisphere `z ≥ 0`, zero below.
+fn upper(w: Vec3, pdf: f32) -> f64 {
+    if w.z >= 0.0 { f64::from(pdf) } else { 0.0 }
+}
+
+#[test]
+fn cosine_hemisphere_matches_its_pdf() {
+    let report = chi2_sphere(
+        |u| Some(cosine_hemisphere(u)),
+        |w| f64::from(cosine_hemisphere_pdf(w.z)),
+        &config(11),
+    );
+    assert_passes("cosine hemisphere", &report);
+}
+
+#[test]
+fn uniform_hemisphere_matches_its_pdf() {
+    let report = chi2_sphere(
+        |u| Some(uniform_hemisphere(u)),
+        |w| upper(w, uniform_hemisphere_pdf()),
+        &config(12),
+    );
+    assert_passes("uniform hemisphere", &report);
+}
+
+#[test]
+fn uniform_sphere_matches_its_pdf() {
+    let report = chi2_sphere(
+        |u| Some(uniform_sphere(u)),
+        |_| f64::from(uniform_sphere_pdf()),
+        &config(13),
+    );
+    assert_passes("uniform sphere", &report);
+}
+
+#[test]
+fn concentric_disk_is_uniform() {
+    // Lift the disk to the hemisphere with Lambert's azimuthal equal-area projection,
+    // (x, y) ↦ (x √(2 − r²), y √(2 − r²), 1 − r²), which sends the uniform density 1/π on
+    // the unit disk to the uniform density 1/(2π) on the hemisphere. A different lift from
+    // the cosine warp's, so the two tests check the disk map through different eyes.
+    let lift = |u: Vec2| {
+        let p = square_to_disk_concentric(u);
+        let r2 = p.length_squared().min(1.0);
+        let s = (2.0 - r2).sqrt();
+        Some(Vec3::new(p.x * s, p.y * s, 1.0 - r2))
+    };
+    let report = chi2_sphere(lift, |w| upper(w, uniform_hemisphere_pdf()), &config(14));
+    assert_passes("concentric disk (equal-area lift)", &report);
+}
+
+#[test]
+fn uniform_cone_matches_its_pdf() {
+    // A narrow cone needs finer rings: 160 rings of width 0.0125 put four across it.
+    for (cos_max, theta_bins, seed) in [(0.95_f32, 160, 15), (0.5, 16, 16), (-0.3, 16, 17)] {
+        let report = chi2_sphere(
+            |u| Some(uniform_cone(u, cos_max)),
+            |w| {
+                if w.z >= cos_max {
+                    f64::from(uniform_cone_pdf(cos_max))
+                } else {
+                    0.0
+                }
+            },
+            &Chi2Config {
+                theta_bins,
+                ..config(seed)
+            },
+        );
+        assert_passes(&format!("uniform cone, cos θmax = {cos_max}"), &report);
+    }
+}
+
+#[test]
+fn sampler_that_fails_half_the_time_matches_a_halved_pdf() {
+    // The directions are cosine-distributed, but half the draws return None: the density
+    // integrates to ½ and the no-sample bin expects N/2.
+    let sampler =
+        |u: Vec2| (u.x >= 0.5).then(|| cosine_hemisphere(Vec2::new(2.0 * u.x - 1.0, u.y)));
+    let report = chi2_sphere(
+        sampler,
+        |w| 0.5 * f64::from(cosine_hemisphere_pdf(w.z)),
+        &config(18),
+    );
+    println!("half-failing sampler, halved pdf: {report}");
+    assert!(report.passed(), "{report}");
+    assert!((report.pdf_integral - 0.5).abs() < 1e-5);
+    assert!((report.expected_rejected - 0.5 * SAMPLES as f64).abs() < 10.0);
+    // Binomial(10⁶, ½): σ = 500.
+    assert!(report.rejected_samples.abs_diff(SAMPLES / 2) < 2_500);
+}
+
+#[test]
+fn cosine_sampling_is_rejected_against_the_uniform_hemisphere_pdf() {
+    let report = chi2_sphere(
+        |u| Some(cosine_hemisphere(u)),
+        |w| upper(w, uniform_hemisphere_pdf()),
+        &config(21),
+    );
+    assert_rejected("cosine samples vs uniform hemisphere pdf", &report);
+    assert!(report.p_value < report.significance);
+    // No outright failure: it is the statistic that rejects.
+    assert_eq!(report.zero_bin_hits + report.invalid_samples, 0);
+}
+
+#[test]
+fn uniform_sphere_is_rejected_against_a_pdf_ten_percent_off_in_one_half() {
+    // Still a density (it integrates to 1): 10 % too high for x > 0, 10 % too low else.
+    let skewed = |w: Vec3| {
+        let base = f64::from(uniform_sphere_pdf());
+        if w.x > 0.0 { 1.1 * base } else { 0.9 * base }
+    };
+    let report = chi2_sphere(|u| Some(uniform_sphere(u)), skewed, &config(22));
+    assert_rejected("uniform sphere vs pdf 10 % off in one half", &report);
+    assert!(report.p_value < report.significance);
+    assert_eq!(report.zero_bin_hits + report.invalid_samples, 0);
+    assert!((report.pdf_integral - 1.0).abs() < 1e-5);
+}
+
+#[test]
+fn samples_where_the_pdf_is_zero_are_rejected() {
+    // One sample in a thousand is mirrored below the horizon, where the cosine density
+    // is zero: about a thousand zero-bin hits, each an outright failure.
+    let mut k = 0_u32;
+    let leaky = |u: Vec2| {
+        k += 1;
+        let w = cosine_hemisphere(u);
+        Some(if k % 1000 == 0 {
+            Vec3::new(w.x, w.y, -w.z)
+        } else {
+            w
+        })
+    };
+    let report = chi2_sphere(
+        leaky,
+        |w| f64::from(cosine_hemisphere_pdf(w.z)),
+        &config(23),
+    );
+    assert_rejected("cosine sampler leaking below the horizon", &report);
+    // Mirrored samples with z exactly 0 stay on the horizon: allow a few.
+    assert!(
+        report.zero_bin_hits > 990 && report.zero_bin_hits <= 1000,
+        "{report}"
+    );
+    assert!(matches!(
+        report.worst.map(|w| w.bin),
+        Some(Chi2Bin::Direction { theta, .. }) if theta < 8
+    ));
+}
+
+#[test]
+fn sampler_that_fails_half_the_time_is_rejected_against_its_full_pdf() {
+    let sampler =
+        |u: Vec2| (u.x >= 0.5).then(|| cosine_hemisphere(Vec2::new(2.0 * u.x - 1.0, u.y)));
+    let report = chi2_sphere(
+        sampler,
+        |w| f64::from(cosine_hemisphere_pdf(w.z)),
+        &config(24),
+    );
+    assert_rejected("half-failing sampler vs full pdf", &report);
+    assert!(report.rejected_samples.abs_diff(SAMPLES / 2) < 2_500);
+    assert!(report.expected_rejected < 1.0);
+    assert!(report.p_value < report.significance);
+}
