@@ -55,6 +55,7 @@ compile_error!("lobe needs a float library: enable the `std` (default) or the `l
 pub mod frame;
 pub mod fresnel;
 pub mod math;
+pub mod microfacet;
 
 pub mod param;
 pub mod sampling;

@@ -14,6 +14,8 @@
 //! * [`chi2_sphere`]: Pearson's chi-square goodness-of-fit test of a direction sampler
 //!   against its solid-angle density, with low-count bins pooled and outright failures
 //!   (samples where the density is zero, invalid samples or densities) reported.
+//! * [`d_normalization`], [`projected_area`], [`visible_normalization`], [`chi2_normals`]:
+//!   the laws of a microfacet distribution ([`NdfCheck`] sets their budget).
 //! * [`sidak`]: the per-test significance for a family of tests, so that a file of `n`
 //!   chi-square tests keeps its overall false-rejection rate.
 //! * [`Pcg32`], [`gamma_p`], [`gamma_q`], [`ln_gamma`], [`chi2_survival`]: the generator
@@ -58,11 +60,16 @@
 mod chi2;
 mod estimate;
 mod gamma;
+mod ndf;
 mod rng;
 mod significance;
 
 pub use chi2::{Chi2Bin, Chi2Config, Chi2Report, Chi2Residual, chi2_sphere, chi2_sphere_rng};
 pub use estimate::{Accumulator, Estimate};
 pub use gamma::{chi2_survival, gamma_p, gamma_q, ln_gamma};
+pub use ndf::{
+    NdfCheck, chi2_normals, d_normalization, projected_area, projected_area_masked,
+    visible_normalization,
+};
 pub use rng::Pcg32;
 pub use significance::sidak;
