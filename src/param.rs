@@ -97,6 +97,15 @@ fn check_spectrum<S: Spectrum>(
     Ok(value)
 }
 
+/// Accepts a spectrum whose every channel lies in `[0, 1]` (a reflectance or a weight),
+/// refusing NaN; the error names `param`.
+///
+/// # Errors
+/// [`ParamError`] naming `param` with the first offending channel.
+pub(crate) fn unit_interval<S: Spectrum>(param: &'static str, value: S) -> Result<S, ParamError> {
+    check_spectrum(param, value, 0.0, 1.0, "[0, 1]")
+}
+
 /// The microfacet width `α` of GGX, Beckmann and their kin: the RMS slope of the
 /// microsurface (Beckmann) or the scale of its slope distribution (GGX).
 ///

@@ -1,6 +1,8 @@
 //! Helpers shared by the integration tests.
 #![allow(dead_code)]
 
+pub mod laws;
+
 use lobe::Vec3;
 use proptest::test_runner::{Config, RngSeed};
 

@@ -1,0 +1,221 @@
+//! BRDF and BSDF models behind one interface, [`Bxdf`].
+//!
+//! Every model works in the local shading frame (`z` the shading normal) with unit
+//! directions: `wo` toward the viewer, `wi` toward the light, both pointing away from the
+//! surface (pbrt-v4's convention). The vocabulary is yocto-gl's: [`Bxdf::eval`] the BSDF value
+//! `f(wo, wi)` *without* the cosine, [`Bxdf::sample`] a direction `wi` with random numbers the
+//! caller passes in, [`Bxdf::pdf`] its solid-angle density.
+//!
+//! **Delta lobes.** A perfectly specular lobe (a mirror, smooth glass) has no density: `eval`
+//! and `pdf` return zero for it, and only `sample` reaches it, with the lobe flagged
+//! [`Lobes::SPECULAR`]. Its `f` is then the delta's coefficient divided by `|cos θi|` and its
+//! `pdf` the probability of choosing it, so that [`BxdfSample::weight`] is the same formula
+//! for every lobe.
+//!
+//! **Sides.** Reflection-only models are one-sided: `f = 0` unless `wo.z > 0` and `wi.z > 0`.
+//! A renderer that shades both sides of a surface flips its shading frame toward `wo`.
+//! Transmissive models take `wo` on either side; the relative index `eta` is
+//! `η_inside / η_outside` with the normal pointing outside.
+
+mod lambert;
+
+pub use lambert::Lambert;
+
+use crate::spectrum::Spectrum;
+use core::fmt;
+use core::ops::{BitOr, BitOrAssign};
+use glam::{Vec2, Vec3};
+
+/// A set of lobe kinds: reflection or transmission, crossed with diffuse, glossy or
+/// specular (delta).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct Lobes(u8);
+
+impl Lobes {
+    /// No lobe.
+    pub const NONE: Self = Self(0);
+    /// Light leaves on the side it arrived from.
+    pub const REFLECTION: Self = Self(1);
+    /// Light crosses the surface.
+    pub const TRANSMISSION: Self = Self(1 << 1);
+    /// A smooth, wide lobe (Lambert, Oren-Nayar).
+    pub const DIFFUSE: Self = Self(1 << 2);
+    /// A lobe with a density, concentrated around a direction (microfacet, Phong).
+    pub const GLOSSY: Self = Self(1 << 3);
+    /// A delta lobe: reached only through [`Bxdf::sample`].
+    pub const SPECULAR: Self = Self(1 << 4);
+    /// Diffuse reflection.
+    pub const DIFFUSE_REFLECTION: Self = Self(Self::DIFFUSE.0 | Self::REFLECTION.0);
+    /// Glossy reflection.
+    pub const GLOSSY_REFLECTION: Self = Self(Self::GLOSSY.0 | Self::REFLECTION.0);
+    /// Glossy transmission.
+    pub const GLOSSY_TRANSMISSION: Self = Self(Self::GLOSSY.0 | Self::TRANSMISSION.0);
+    /// Specular reflection.
+    pub const SPECULAR_REFLECTION: Self = Self(Self::SPECULAR.0 | Self::REFLECTION.0);
+    /// Specular transmission.
+    pub const SPECULAR_TRANSMISSION: Self = Self(Self::SPECULAR.0 | Self::TRANSMISSION.0);
+
+    /// True when every kind in `other` is in `self`.
+    #[inline]
+    #[must_use]
+    pub const fn contains(self, other: Self) -> bool {
+        self.0 & other.0 == other.0
+    }
+
+    /// True when `self` and `other` share a kind.
+    #[inline]
+    #[must_use]
+    pub const fn intersects(self, other: Self) -> bool {
+        self.0 & other.0 != 0
+    }
+
+    /// True when the set has a delta lobe.
+    #[inline]
+    #[must_use]
+    pub const fn is_specular(self) -> bool {
+        self.intersects(Self::SPECULAR)
+    }
+
+    /// True when the set has a lobe with a density (diffuse or glossy).
+    #[inline]
+    #[must_use]
+    pub const fn is_non_specular(self) -> bool {
+        self.intersects(Self(Self::DIFFUSE.0 | Self::GLOSSY.0))
+    }
+
+    /// True when the set reflects.
+    #[inline]
+    #[must_use]
+    pub const fn is_reflective(self) -> bool {
+        self.intersects(Self::REFLECTION)
+    }
+
+    /// True when the set transmits.
+    #[inline]
+    #[must_use]
+    pub const fn is_transmissive(self) -> bool {
+        self.intersects(Self::TRANSMISSION)
+    }
+}
+
+impl BitOr for Lobes {
+    type Output = Self;
+    #[inline]
+    fn bitor(self, rhs: Self) -> Self {
+        Self(self.0 | rhs.0)
+    }
+}
+
+impl BitOrAssign for Lobes {
+    #[inline]
+    fn bitor_assign(&mut self, rhs: Self) {
+        self.0 |= rhs.0;
+    }
+}
+
+impl fmt::Display for Lobes {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let names = [
+            (Self::REFLECTION, "reflection"),
+            (Self::TRANSMISSION, "transmission"),
+            (Self::DIFFUSE, "diffuse"),
+            (Self::GLOSSY, "glossy"),
+            (Self::SPECULAR, "specular"),
+        ];
+        let mut first = true;
+        for (lobe, name) in names {
+            if self.contains(lobe) {
+                if !first {
+                    f.write_str(" ")?;
+                }
+                f.write_str(name)?;
+                first = false;
+            }
+        }
+        if first {
+            f.write_str("none")?;
+        }
+        Ok(())
+    }
+}
+
+/// Whether a BSDF transports radiance (from lights, a camera path) or importance (from the
+/// camera, a light path). Only refraction cares: radiance crossing an interface is scaled by
+/// `(η_i/η_t)²`, importance is not (Veach 1997, §5.2).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum TransportMode {
+    /// Paths traced from the camera (the usual case).
+    #[default]
+    Radiance,
+    /// Paths traced from the lights.
+    Importance,
+}
+
+/// A direction drawn by [`Bxdf::sample`], with what a renderer needs to weigh it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BxdfSample<S> {
+    /// The sampled direction toward the light, unit, local frame.
+    pub wi: Vec3,
+    /// The BSDF value `f(wo, wi)` (for a delta lobe, its coefficient over `|cos θi|`).
+    pub f: S,
+    /// The solid-angle density of `wi` (for a delta lobe, the probability of choosing it).
+    pub pdf: f32,
+    /// The lobe the sample came from: one of reflection/transmission and one of
+    /// diffuse/glossy/specular.
+    pub lobe: Lobes,
+    /// The relative index `η_t/η_i` the path crossed, `1` for reflection.
+    pub eta: f32,
+}
+
+impl<S: Spectrum> BxdfSample<S> {
+    /// The throughput weight `f |cos θi| / pdf` a path tracer multiplies by.
+    #[inline]
+    #[must_use]
+    pub fn weight(&self) -> S {
+        self.f * (self.wi.z.abs() / self.pdf)
+    }
+
+    /// True when the sample came from a delta lobe.
+    #[inline]
+    #[must_use]
+    pub fn is_specular(&self) -> bool {
+        self.lobe.is_specular()
+    }
+}
+
+/// A BRDF or BSDF in the local shading frame.
+///
+/// Implementations are total: for any finite unit `wo`, `wi` and `u ∈ [0, 1)²`, `uc ∈ [0, 1)`,
+/// `eval` is finite and non-negative, `pdf` finite and non-negative, and `sample` returns
+/// either `None` or a sample with a unit `wi`, a finite non-negative `f` and a positive finite
+/// `pdf`.
+pub trait Bxdf {
+    /// The carrier of the BSDF's values: `f32`, RGB `Vec3` or four wavelengths `Vec4`.
+    type Spectrum: Spectrum;
+
+    /// The BSDF value `f(wo, wi)`, without the cosine; zero for delta lobes.
+    #[must_use]
+    fn eval(&self, wo: Vec3, wi: Vec3) -> Self::Spectrum;
+
+    /// Draws `wi` for the viewer direction `wo`, with `u` uniform in `[0, 1)²` for the
+    /// direction and `uc` uniform in `[0, 1)` for the choice of lobe; `None` when no direction
+    /// can be produced (the pdf's missing mass).
+    #[must_use]
+    fn sample(&self, wo: Vec3, u: Vec2, uc: f32) -> Option<BxdfSample<Self::Spectrum>>;
+
+    /// The solid-angle density with which [`sample`](Self::sample) produces `wi`, over its
+    /// non-delta lobes.
+    #[must_use]
+    fn pdf(&self, wo: Vec3, wi: Vec3) -> f32;
+
+    /// The kinds of lobe the model has.
+    #[must_use]
+    fn lobes(&self) -> Lobes;
+}
+
+/// `wo` and `wi` both strictly above the surface: the support of a one-sided BRDF.
+#[inline]
+#[must_use]
+pub(crate) fn both_above(wo: Vec3, wi: Vec3) -> bool {
+    wo.z > 0.0 && wi.z > 0.0
+}
