@@ -325,6 +325,97 @@ pub fn conductor_approx<S: Spectrum>(cos_i: f32, ior: &ComplexIor<S>) -> S {
     })
 }
 
+/// A Fresnel term as a value a model can hold: the reflectance of a (micro)facet as a
+/// function of the cosine between the incident direction and the facet normal.
+///
+/// The models are generic over it, so the choice costs nothing in the shading loop.
+pub trait Fresnel: Copy {
+    /// The carrier of the reflectance.
+    type Spectrum: Spectrum;
+
+    /// The reflectance at `cos_d = wo·m` (Burley's `cos θd`).
+    #[must_use]
+    fn eval(&self, cos_d: f32) -> Self::Spectrum;
+}
+
+/// Schlick's approximation with normal-incidence reflectance `f0` ([`schlick`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Schlick<S = f32> {
+    f0: S,
+}
+
+impl<S: Spectrum> Schlick<S> {
+    /// Schlick's term for `f0 ∈ [0, 1]` per channel.
+    ///
+    /// # Errors
+    /// [`ParamError`](crate::ParamError) naming `f0` for a channel that is NaN or outside
+    /// `[0, 1]`.
+    pub fn new(f0: S) -> Result<Self, crate::ParamError> {
+        Ok(Self {
+            f0: crate::param::unit_interval("f0", f0)?,
+        })
+    }
+}
+
+impl<S: Spectrum> Fresnel for Schlick<S> {
+    type Spectrum = S;
+    #[inline]
+    fn eval(&self, cos_d: f32) -> S {
+        schlick(self.f0, cos_d)
+    }
+}
+
+/// The exact conductor term for a complex index ([`conductor`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Conductor<S = f32> {
+    /// The complex index `η + iκ`.
+    pub ior: ComplexIor<S>,
+}
+
+impl<S: Spectrum> Fresnel for Conductor<S> {
+    type Spectrum = S;
+    #[inline]
+    fn eval(&self, cos_d: f32) -> S {
+        conductor(cos_d, &self.ior)
+    }
+}
+
+/// The exact dielectric term for a relative index ([`dielectric`]), the same in every channel.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Dielectric {
+    /// The relative index `η_inside / η_outside`.
+    pub eta: Eta,
+}
+
+impl Fresnel for Dielectric {
+    type Spectrum = f32;
+    #[inline]
+    fn eval(&self, cos_d: f32) -> f32 {
+        dielectric(cos_d, self.eta)
+    }
+}
+
+/// No Fresnel effect: reflectance `1` at every angle (a perfect reflector, Mitsuba's `none`
+/// conductor), for checking a model's masking and energy alone.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct NoFresnel<S = f32>(core::marker::PhantomData<S>);
+
+impl<S> NoFresnel<S> {
+    /// The term that is `1` everywhere.
+    #[must_use]
+    pub const fn new() -> Self {
+        Self(core::marker::PhantomData)
+    }
+}
+
+impl<S: Spectrum> Fresnel for NoFresnel<S> {
+    type Spectrum = S;
+    #[inline]
+    fn eval(&self, _cos_d: f32) -> S {
+        S::one()
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

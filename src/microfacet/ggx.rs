@@ -209,6 +209,16 @@ impl NormalDistribution for Ggx {
         self.d_visible(w, m)
     }
 
+    #[inline]
+    fn sample_reflection(&self, w: Vec3, u: Vec2) -> Vec3 {
+        self.sample_visible_bounded(w, u)
+    }
+
+    #[inline]
+    fn pdf_reflection(&self, w: Vec3, m: Vec3) -> f32 {
+        self.d_visible_bounded(w, m)
+    }
+
     /// Slopes drawn from GGX's slope distribution, radius `r = √(u/(1−u))` (Walter et al.
     /// 2007, eq. 35, in slope form), stretched by `(αx, αy)`.
     #[inline]

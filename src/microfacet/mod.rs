@@ -79,8 +79,8 @@ pub trait NormalDistribution {
     /// The distribution of normals visible from `w` (Heitz & d'Eon 2014, eq. 2):
     /// `D_w(m) = G1(w) max(0, w·m) D(m) / cos θw`, a density in `m` that integrates to 1.
     ///
-    /// `w` below the horizon is first mirrored to `(x, y, |z|)`, the convention of
-    /// [`sample`](Self::sample) (a refracting model sees the surface from either side).
+    /// `w` below the horizon is first replaced by `−w` ([`upper`]), the convention of
+    /// [`sample`](Self::sample): a refracting model sees the surface from either side.
     #[must_use]
     fn d_visible(&self, w: Vec3, m: Vec3) -> f32 {
         let w = upper(w);
@@ -100,7 +100,7 @@ pub trait NormalDistribution {
     /// [`pdf`](Self::pdf) in solid angle of `m`: the visible normals `D_w(m)` where the
     /// distribution can sample them, `D(m) cos θm` otherwise.
     ///
-    /// `u` is uniform in `[0, 1)²`. `w` below the horizon is mirrored as in
+    /// `u` is uniform in `[0, 1)²`. `w` below the horizon is replaced by `−w` as in
     /// [`d_visible`](Self::d_visible). Always returns a unit vector with `m.z ≥ 0`.
     #[must_use]
     fn sample(&self, w: Vec3, u: Vec2) -> Vec3;
@@ -108,6 +108,23 @@ pub trait NormalDistribution {
     /// The density of [`sample`](Self::sample), in solid angle of `m`.
     #[must_use]
     fn pdf(&self, w: Vec3, m: Vec3) -> f32;
+
+    /// Draws a normal for *reflecting* `w` (`w` above the surface), with density
+    /// [`pdf_reflection`](Self::pdf_reflection). The default is [`sample`](Self::sample);
+    /// a distribution may instead skip normals that would reflect `w` below the horizon
+    /// ([`Ggx`] uses Eto & Tokuyoshi's bounded sampler).
+    #[inline]
+    #[must_use]
+    fn sample_reflection(&self, w: Vec3, u: Vec2) -> Vec3 {
+        self.sample(w, u)
+    }
+
+    /// The density of [`sample_reflection`](Self::sample_reflection), in solid angle of `m`.
+    #[inline]
+    #[must_use]
+    fn pdf_reflection(&self, w: Vec3, m: Vec3) -> f32 {
+        self.pdf(w, m)
+    }
 
     /// Draws a microfacet normal with density `D(m) cos θm` (the classic sampler of Walter
     /// et al. 2007, §5.3, eq. 28's density), `u` uniform in `[0, 1)²`.
@@ -125,14 +142,18 @@ pub trait NormalDistribution {
 /// A distribution that can draw its visible normals exactly.
 pub trait VisibleNormals: NormalDistribution {
     /// Draws `m` with density [`d_visible(w, m)`](NormalDistribution::d_visible), `u`
-    /// uniform in `[0, 1)²`; `w` below the horizon is mirrored to `(x, y, |z|)`.
+    /// uniform in `[0, 1)²`; `w` below the horizon is replaced by `−w` ([`upper`]).
     #[must_use]
     fn sample_visible(&self, w: Vec3, u: Vec2) -> Vec3;
 }
 
-/// `w` mirrored into the upper hemisphere: `(x, y, |z|)`.
+/// `w` turned into the upper hemisphere: `−w` when `w.z < 0`, else `w`.
+///
+/// A direction below the macro-surface sees the microsurface from the inside, where the
+/// visible microfacets are those that `−w` sees from the outside (pbrt-v4's and Mitsuba 3's
+/// convention for refraction).
 #[inline]
 #[must_use]
 pub fn upper(w: Vec3) -> Vec3 {
-    Vec3::new(w.x, w.y, w.z.abs())
+    if w.z < 0.0 { -w } else { w }
 }
