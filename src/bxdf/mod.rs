@@ -18,8 +18,10 @@
 //! `η_inside / η_outside` with the normal pointing outside.
 
 mod lambert;
+mod microfacet;
 
 pub use lambert::Lambert;
+pub use microfacet::{Microfacet, RoughConductor};
 
 use crate::spectrum::Spectrum;
 use core::fmt;
