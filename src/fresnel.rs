@@ -188,6 +188,24 @@ pub fn dielectric_full(cos_i: f32, eta: Eta) -> DielectricFresnel {
     }
 }
 
+/// The dielectric Fresnel reflectance when both cosines of a refraction are known: `cos_i`
+/// on the incident side, `cos_t` on the transmitted side (magnitudes are used), and
+/// `eta_it = η_t / η_i`.
+///
+/// `F = ½(r_s² + r_p²)`, `r_s = (cos θi − η cos θt)/(cos θi + η cos θt)`,
+/// `r_p = (η cos θi − cos θt)/(η cos θi + cos θt)` (Born & Wolf, §1.5.2). Swapping the sides
+/// (`cos_t`, `cos_i`, `1/eta_it`) gives the same value, which makes a refraction model built on
+/// it exactly reciprocal; and it needs no `cos θt` from Snell's law, whose `1 − η² sin² θ`
+/// cancels near the critical angle. Both cosines `0` (a grazing pair) gives `1`.
+#[inline]
+#[must_use]
+pub fn dielectric_refracted(cos_i: f32, cos_t: f32, eta_it: f32) -> f32 {
+    let (ci, ct) = (cos_i.abs().min(1.0), cos_t.abs().min(1.0));
+    let rs = ratio_or_one(ci - eta_it * ct, ci + eta_it * ct);
+    let rp = ratio_or_one(eta_it * ci - ct, eta_it * ci + ct);
+    (0.5 * (rs * rs + rp * rp)).min(1.0)
+}
+
 /// `num / den`, or 1 where the ratio is the 0/0 limit of a grazing or vanishing-index
 /// configuration (`den` is a sum of squares, so `den ≤ 0` means `den == 0`).
 #[inline(always)]

@@ -19,9 +19,11 @@
 
 mod lambert;
 mod microfacet;
+mod rough_dielectric;
 
 pub use lambert::Lambert;
 pub use microfacet::{Microfacet, RoughConductor};
+pub use rough_dielectric::RoughDielectric;
 
 use crate::spectrum::Spectrum;
 use core::fmt;

@@ -130,25 +130,87 @@ pub fn sample_consistency<B: Bxdf<Spectrum = f32> + ?Sized>(
     (worst_f, worst_pdf)
 }
 
-/// The relative reciprocity error of a pair of directions:
-/// `|f(wo, wi)/η_o² − f(wi, wo)/η_i²| / max(…)`, where `η_o`, `η_i` are the indices of the
-/// media on the sides of `wo` and `wi` (`1` above the surface, `eta` below). With `eta = 1`
-/// (or for reflection, where both sides agree) this is plain Helmholtz reciprocity; across
-/// an interface it is the generalised form for radiance transport (Veach 1997, eq. 5.12).
-/// Zero when both values are zero.
+/// One reciprocity measurement: the two sides of the (generalised) reciprocity relation for
+/// a pair of directions, and how far apart f32 round-off alone can put them.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Reciprocity {
+    /// `f(wo, wi) / η_o²`.
+    pub forward: f64,
+    /// `f(wi, wo) / η_i²`.
+    pub backward: f64,
+    /// The round-off allowance: the largest change of either side when `wo` or `wi` moves by
+    /// a few ulps (four perturbations of `4 ε` radians each), twice, plus an absolute
+    /// [`SUBNORMAL_FLOOR`]. An ill-conditioned pair (a microfacet seen edge-on) gets a large
+    /// allowance; a well-conditioned one, almost none.
+    pub round_off: f64,
+}
+
+impl Reciprocity {
+    /// `|forward − backward| / max(|forward|, |backward|)`, zero when both are zero.
+    #[must_use]
+    pub fn relative_error(&self) -> f64 {
+        let (a, b) = (self.forward, self.backward);
+        if a == b {
+            0.0
+        } else {
+            (a - b).abs() / a.abs().max(b.abs())
+        }
+    }
+
+    /// True when the sides agree within `rel_tol` relative error plus the round-off
+    /// allowance.
+    #[must_use]
+    pub fn holds(&self, rel_tol: f64) -> bool {
+        let (a, b) = (self.forward, self.backward);
+        (a - b).abs() <= rel_tol * a.abs().max(b.abs()) + self.round_off
+    }
+}
+
+/// Values this small are products whose intermediate factors went below
+/// `f32::MIN_POSITIVE` and lost their relative precision (a far tail of `D`); reciprocity is
+/// not checked below it.
+pub const SUBNORMAL_FLOOR: f64 = 1e-30;
+
+/// Measures reciprocity for one pair: `f(wo, wi)/η_o²` against `f(wi, wo)/η_i²`, where
+/// `η_o`, `η_i` are the indices on the sides of `wo` and `wi` (`1` above the surface, `eta`
+/// below). With `eta = 1`, or both directions on one side, this is plain Helmholtz
+/// reciprocity; across an interface it is the generalised form for radiance transport (Veach
+/// 1997, eq. 5.12). For a model in importance mode pass `1/η`.
 #[must_use]
-pub fn reciprocity_error<B: Bxdf<Spectrum = f32> + ?Sized>(
+pub fn reciprocity<B: Bxdf<Spectrum = f32> + ?Sized>(
     bxdf: &B,
     wo: Vec3,
     wi: Vec3,
     eta: f32,
-) -> f64 {
+) -> Reciprocity {
     let side = |w: Vec3| if w.z >= 0.0 { 1.0 } else { f64::from(eta) };
-    let a = f64::from(bxdf.eval(wo, wi)) / (side(wo) * side(wo));
-    let b = f64::from(bxdf.eval(wi, wo)) / (side(wi) * side(wi));
-    if a == b {
-        0.0
-    } else {
-        (a - b).abs() / a.abs().max(b.abs())
+    let forward = |a: Vec3, b: Vec3| f64::from(bxdf.eval(a, b)) / (side(a) * side(a));
+    let (a, b) = (forward(wo, wi), forward(wi, wo));
+    let mut spread = 0.0_f64;
+    let eps = 4.0 * f32::EPSILON;
+    for k in 0..4 {
+        let (po, pi) = (nudge(wo, k, eps), nudge(wi, k, eps));
+        spread = spread
+            .max((forward(po, wi) - a).abs())
+            .max((forward(wo, pi) - a).abs())
+            .max((forward(wi, po) - b).abs())
+            .max((forward(pi, wo) - b).abs());
     }
+    Reciprocity {
+        forward: a,
+        backward: b,
+        round_off: 2.0 * spread + SUBNORMAL_FLOOR,
+    }
+}
+
+/// `w` turned by `eps` radians toward one of four tangent directions (`k` = 0…3).
+fn nudge(w: Vec3, k: usize, eps: f32) -> Vec3 {
+    let frame = crate::Frame::from_normal(w);
+    let t = match k {
+        0 => frame.x,
+        1 => -frame.x,
+        2 => frame.y,
+        _ => -frame.y,
+    };
+    (w + t * eps).normalize()
 }

@@ -17,7 +17,7 @@
 //! * [`d_normalization`], [`projected_area`], [`visible_normalization`], [`chi2_normals`]:
 //!   the laws of a microfacet distribution ([`NdfCheck`] sets their budget).
 //! * [`albedo_sampled`], [`albedo_cosine`], [`chi2_bxdf`], [`sample_consistency`],
-//!   [`reciprocity_error`]: the laws of a BSDF ([`BxdfCheck`] sets their budget).
+//!   [`reciprocity`]: the laws of a BSDF ([`BxdfCheck`] sets their budget).
 //! * [`sidak`]: the per-test significance for a family of tests, so that a file of `n`
 //!   chi-square tests keeps its overall false-rejection rate.
 //! * [`Pcg32`], [`gamma_p`], [`gamma_q`], [`ln_gamma`], [`chi2_survival`]: the generator
@@ -68,7 +68,8 @@ mod rng;
 mod significance;
 
 pub use bxdf::{
-    BxdfCheck, albedo_cosine, albedo_sampled, chi2_bxdf, reciprocity_error, sample_consistency,
+    BxdfCheck, Reciprocity, SUBNORMAL_FLOOR, albedo_cosine, albedo_sampled, chi2_bxdf, reciprocity,
+    sample_consistency,
 };
 pub use chi2::{Chi2Bin, Chi2Config, Chi2Report, Chi2Residual, chi2_sphere, chi2_sphere_rng};
 pub use estimate::{Accumulator, Estimate};

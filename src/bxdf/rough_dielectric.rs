@@ -1,0 +1,228 @@
+//! Walter et al.'s rough dielectric: microfacet reflection and refraction.
+
+use super::{Bxdf, BxdfSample, Lobes, TransportMode};
+use crate::frame::{reflect, refract};
+use crate::fresnel::{dielectric, dielectric_refracted};
+use crate::microfacet::{Masking, NormalDistribution};
+use crate::param::Eta;
+use glam::{Vec2, Vec3};
+
+/// A rough interface between two dielectrics (glass, water): microfacet reflection and
+/// transmission (Walter, Marschner, Li & Torrance 2007, "Microfacet Models for Refraction
+/// through Rough Surfaces", eqs. 20–21):
+///
+/// ```text
+/// f_r = F(wo·h) D(h) G2 / (4 |cos θo| |cos θi|),                 h ∝ wo + wi
+/// f_t = |wi·h| |wo·h| (1 − F(wo·h)) D(h) G2 / (|cos θi| |cos θo| (wi·h + (wo·h)/η')²) / η'²
+/// ```
+///
+/// with the generalised half vector `h ∝ η' wi + wo` for transmission, `η' = η` when `wo` is
+/// outside and `1/η` inside, and `F` the exact dielectric Fresnel term. The final `1/η'²` is
+/// the radiance scaling of refraction (Veach 1997, §5.2): it applies in
+/// [`TransportMode::Radiance`] (the default) and not in [`TransportMode::Importance`].
+///
+/// `wo` may be on either side; `eta = η_inside / η_outside` with the normal pointing outside.
+/// Total internal reflection is handled by the Fresnel term (it is 1 there).
+///
+/// Sampling: a visible normal for `wo` (or for `−wo` from the inside), then reflection with
+/// probability `F(wo·m)` or refraction otherwise (Walter et al. 2007, §5.3); the density is the
+/// normal's times the Jacobian of reflection, `1/(4 |wo·h|)`, or of refraction,
+/// `|wi·h| / (wi·h + (wo·h)/η')²` (eqs. 14 and 17).
+///
+/// Laws: positive; reciprocal in the generalised form `f(wo, wi)/η_o² = f(wi, wo)/η_i²` in
+/// radiance mode; single-scattering, so it loses energy with roughness. The tests measure each.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RoughDielectric<D> {
+    distribution: D,
+    masking: Masking,
+    eta: Eta,
+    mode: TransportMode,
+}
+
+impl<D: NormalDistribution> RoughDielectric<D> {
+    /// A rough interface of relative index `eta`, with height-correlated Smith masking and
+    /// radiance transport.
+    #[must_use]
+    pub fn new(distribution: D, eta: Eta) -> Self {
+        Self {
+            distribution,
+            masking: Masking::HeightCorrelated,
+            eta,
+            mode: TransportMode::Radiance,
+        }
+    }
+
+    /// The same interface with the masking `masking`.
+    #[must_use]
+    pub fn with_masking(self, masking: Masking) -> Self {
+        Self { masking, ..self }
+    }
+
+    /// The same interface for the transport mode `mode`.
+    #[must_use]
+    pub fn with_mode(self, mode: TransportMode) -> Self {
+        Self { mode, ..self }
+    }
+
+    /// The relative index of refraction.
+    #[inline]
+    #[must_use]
+    pub fn eta(&self) -> Eta {
+        self.eta
+    }
+
+    /// The relative index `η'` seen by a transmission from `wo`'s side.
+    #[inline]
+    fn etap(&self, wo: Vec3) -> f32 {
+        if wo.z > 0.0 {
+            self.eta.get()
+        } else {
+            1.0 / self.eta.get()
+        }
+    }
+
+    /// The microfacet configuration that connects `wo` and `wi`, or `None` when no single
+    /// microfacet can.
+    #[inline]
+    fn configuration(&self, wo: Vec3, wi: Vec3) -> Option<Configuration> {
+        if wo.z == 0.0 || wi.z == 0.0 {
+            return None;
+        }
+        let reflection = wo.z * wi.z > 0.0;
+        let etap = if reflection { 1.0 } else { self.etap(wo) };
+        // s = wo + η' wi in f64: for refraction the two nearly cancel around the
+        // straight-through direction, and |s| sets both h and the Jacobian's denominator.
+        let e = f64::from(etap);
+        let s = [
+            f64::from(wo.x) + e * f64::from(wi.x),
+            f64::from(wo.y) + e * f64::from(wi.y),
+            f64::from(wo.z) + e * f64::from(wi.z),
+        ];
+        let len2 = s[0] * s[0] + s[1] * s[1] + s[2] * s[2];
+        if !(len2 > 0.0) {
+            return None;
+        }
+        // Upper hemisphere: h = ±s/|s| with h.z > 0.
+        let scale = 1.0 / len2.sqrt() * if s[2] < 0.0 { -1.0 } else { 1.0 };
+        let h = Vec3::new(
+            (s[0] * scale) as f32,
+            (s[1] * scale) as f32,
+            (s[2] * scale) as f32,
+        );
+        // Each direction must see the microfacet from its own side of the macro-surface.
+        if wo.dot(h) * wo.z <= 0.0 || wi.dot(h) * wi.z <= 0.0 {
+            return None;
+        }
+        // (wi·h + (wo·h)/η')² = |s|²/η'², since h ∥ s: no cancellation.
+        let denom2 = (len2 / (e * e)) as f32;
+        Some(Configuration {
+            h,
+            reflection,
+            etap,
+            denom2,
+        })
+    }
+
+    /// `f` for a configuration.
+    #[inline]
+    fn value(&self, wo: Vec3, wi: Vec3, c: &Configuration) -> f32 {
+        let d = self.distribution.d(c.h);
+        if d == 0.0 {
+            return 0.0;
+        }
+        let (woh, wih) = (wo.dot(c.h), wi.dot(c.h));
+        let g = self.masking.g2(&self.distribution, wo, wi, c.h);
+        if c.reflection {
+            (dielectric(woh, self.eta) * d * g / (4.0 * wo.z * wi.z)).abs()
+        } else {
+            // Fresnel from both cosines: symmetric in wo and wi, so f is reciprocal to
+            // round-off even at the critical angle, where Snell's cos θt cancels.
+            let f = dielectric_refracted(woh, wih, c.etap);
+            let t = (1.0 - f) * d * g * (wih * woh / (wi.z * wo.z * c.denom2)).abs();
+            match self.mode {
+                TransportMode::Radiance => t / (c.etap * c.etap),
+                TransportMode::Importance => t,
+            }
+        }
+    }
+
+    /// The density of a configuration.
+    #[inline]
+    fn density(&self, wo: Vec3, wi: Vec3, c: &Configuration) -> f32 {
+        let woh = wo.dot(c.h);
+        let f = dielectric(woh, self.eta);
+        let pdf_h = self.distribution.pdf(wo, c.h);
+        if c.reflection {
+            pdf_h * f / (4.0 * woh.abs())
+        } else {
+            pdf_h * (1.0 - f) * wi.dot(c.h).abs() / c.denom2
+        }
+    }
+}
+
+/// How a microfacet connects a pair of directions.
+struct Configuration {
+    /// The microfacet normal, upper hemisphere.
+    h: Vec3,
+    /// Reflection (both directions on one side) or refraction.
+    reflection: bool,
+    /// `η'`: `1` for reflection, the relative index seen from `wo`'s side for refraction.
+    etap: f32,
+    /// `(wi·h + (wo·h)/η')²`, the refraction Jacobian's denominator.
+    denom2: f32,
+}
+
+impl<D: NormalDistribution> Bxdf for RoughDielectric<D> {
+    type Spectrum = f32;
+
+    #[inline]
+    fn eval(&self, wo: Vec3, wi: Vec3) -> f32 {
+        self.configuration(wo, wi)
+            .map_or(0.0, |c| self.value(wo, wi, &c))
+    }
+
+    fn sample(&self, wo: Vec3, u: Vec2, uc: f32) -> Option<BxdfSample<f32>> {
+        if wo.z == 0.0 {
+            return None;
+        }
+        let m = self.distribution.sample(wo, u);
+        let f = dielectric(wo.dot(m), self.eta);
+        let wi = if uc < f {
+            reflect(wo, m)
+        } else {
+            refract(wo, m, self.eta)?
+        };
+        // Evaluate at the configuration of (wo, wi), as `eval` and `pdf` do.
+        let c = self.configuration(wo, wi)?;
+        if c.reflection != (uc < f) {
+            return None;
+        }
+        let pdf = self.density(wo, wi, &c);
+        if !(pdf > 0.0 && pdf.is_finite()) {
+            return None;
+        }
+        let (lobe, eta) = if c.reflection {
+            (Lobes::GLOSSY_REFLECTION, 1.0)
+        } else {
+            (Lobes::GLOSSY_TRANSMISSION, c.etap)
+        };
+        Some(BxdfSample {
+            wi,
+            f: self.value(wo, wi, &c),
+            pdf,
+            lobe,
+            eta,
+        })
+    }
+
+    #[inline]
+    fn pdf(&self, wo: Vec3, wi: Vec3) -> f32 {
+        self.configuration(wo, wi)
+            .map_or(0.0, |c| self.density(wo, wi, &c))
+    }
+
+    #[inline]
+    fn lobes(&self) -> Lobes {
+        Lobes::GLOSSY_REFLECTION | Lobes::GLOSSY_TRANSMISSION
+    }
+}
