@@ -19,11 +19,17 @@
 
 mod lambert;
 mod microfacet;
+mod mirror;
 mod rough_dielectric;
+mod smooth_dielectric;
+mod thin_dielectric;
 
 pub use lambert::Lambert;
 pub use microfacet::{Microfacet, RoughConductor};
+pub use mirror::Mirror;
 pub use rough_dielectric::RoughDielectric;
+pub use smooth_dielectric::SmoothDielectric;
+pub use thin_dielectric::ThinDielectric;
 
 use crate::spectrum::Spectrum;
 use core::fmt;

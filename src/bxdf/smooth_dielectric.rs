@@ -1,0 +1,105 @@
+//! A smooth dielectric interface: delta reflection and refraction with the exact Fresnel term.
+
+use super::{Bxdf, BxdfSample, Lobes, TransportMode};
+use crate::frame::refract;
+use crate::fresnel::dielectric;
+use crate::param::Eta;
+use glam::{Vec2, Vec3};
+
+/// A smooth interface between two dielectrics: specular reflection with probability `F` and
+/// refraction (Snell's law) with probability `1 − F`, `F` the exact unpolarised Fresnel
+/// reflectance ([`dielectric`]):
+///
+/// ```text
+/// f_r = F δ(wi − reflect(wo)) / |cos θi|
+/// f_t = (1 − F) δ(wi − refract(wo)) / |cos θi| / η'²      (radiance mode)
+/// ```
+///
+/// The handouts' refraction (seed 003, "Refraction at boundary of media", "Fresnel's
+/// formulas"); pbrt-v4 §9.5. `η'` is the relative index the path crosses (`η` entering, `1/η`
+/// leaving); the `1/η'²` radiance scaling applies in [`TransportMode::Radiance`] only (Veach
+/// 1997, §5.2). `wo` may be on either side; total internal reflection gives `F = 1`.
+///
+/// Delta lobes only: `eval` and `pdf` are zero. Laws: positive; in importance mode every
+/// sample's weight is exactly 1, so the albedo is `F + (1 − F) = 1` (the interface loses
+/// nothing); in radiance mode the refracted weight is `1/η'²`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SmoothDielectric {
+    eta: Eta,
+    mode: TransportMode,
+}
+
+impl SmoothDielectric {
+    /// A smooth interface of relative index `eta`, for radiance transport.
+    #[must_use]
+    pub fn new(eta: Eta) -> Self {
+        Self {
+            eta,
+            mode: TransportMode::Radiance,
+        }
+    }
+
+    /// The same interface for the transport mode `mode`.
+    #[must_use]
+    pub fn with_mode(self, mode: TransportMode) -> Self {
+        Self { mode, ..self }
+    }
+}
+
+impl Bxdf for SmoothDielectric {
+    type Spectrum = f32;
+
+    #[inline]
+    fn eval(&self, _wo: Vec3, _wi: Vec3) -> f32 {
+        0.0
+    }
+
+    #[inline]
+    fn sample(&self, wo: Vec3, _u: Vec2, uc: f32) -> Option<BxdfSample<f32>> {
+        if wo.z == 0.0 {
+            return None;
+        }
+        let r = dielectric(wo.z, self.eta);
+        if uc < r {
+            let wi = Vec3::new(-wo.x, -wo.y, wo.z);
+            return Some(BxdfSample {
+                wi,
+                f: r / wi.z.abs(),
+                pdf: r,
+                lobe: Lobes::SPECULAR_REFLECTION,
+                eta: 1.0,
+            });
+        }
+        let t = 1.0 - r;
+        let wi = refract(wo, Vec3::Z, self.eta)?;
+        if !(wi.z != 0.0 && t > 0.0) {
+            return None;
+        }
+        let etap = if wo.z > 0.0 {
+            self.eta.get()
+        } else {
+            1.0 / self.eta.get()
+        };
+        let scale = match self.mode {
+            TransportMode::Radiance => 1.0 / (etap * etap),
+            TransportMode::Importance => 1.0,
+        };
+        Some(BxdfSample {
+            wi,
+            f: t * scale / wi.z.abs(),
+            pdf: t,
+            lobe: Lobes::SPECULAR_TRANSMISSION,
+            eta: etap,
+        })
+    }
+
+    #[inline]
+    fn pdf(&self, _wo: Vec3, _wi: Vec3) -> f32 {
+        0.0
+    }
+
+    #[inline]
+    fn lobes(&self) -> Lobes {
+        Lobes::SPECULAR_REFLECTION | Lobes::SPECULAR_TRANSMISSION
+    }
+}
