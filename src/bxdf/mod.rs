@@ -17,16 +17,20 @@
 //! Transmissive models take `wo` on either side; the relative index `eta` is
 //! `η_inside / η_outside` with the normal pointing outside.
 
+mod glazed;
 mod lambert;
 mod microfacet;
 mod mirror;
+mod plastic;
 mod rough_dielectric;
 mod smooth_dielectric;
 mod thin_dielectric;
 
+pub use glazed::Glazed;
 pub use lambert::Lambert;
 pub use microfacet::{Microfacet, RoughConductor};
 pub use mirror::Mirror;
+pub use plastic::Plastic;
 pub use rough_dielectric::RoughDielectric;
 pub use smooth_dielectric::SmoothDielectric;
 pub use thin_dielectric::ThinDielectric;

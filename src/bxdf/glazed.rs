@@ -1,0 +1,147 @@
+//! The handouts' glazed material: a diffuse base under a smooth dielectric coat.
+
+use super::{Bxdf, BxdfSample, Lobes, both_above};
+use crate::fresnel::dielectric;
+use crate::param::{Eta, ParamError, unit_interval};
+use crate::sampling::{cosine_hemisphere, cosine_hemisphere_pdf};
+use crate::spectrum::Spectrum;
+use core::f32::consts::FRAC_1_PI;
+use glam::{Vec2, Vec3};
+
+/// Gauss-Legendre nodes and weights on `[−1, 1]`, 8 points (Abramowitz & Stegun, table 25.4).
+const GL_NODES: [f32; 4] = [0.183_434_64, 0.525_532_4, 0.796_666_5, 0.960_289_85];
+const GL_WEIGHTS: [f32; 4] = [0.362_683_78, 0.313_706_65, 0.222_381_03, 0.101_228_54];
+
+/// A diffuse base of reflectance `ρ` under a smooth dielectric coat of relative index `η`:
+/// the coat reflects as a mirror with the exact Fresnel reflectance `F`, and the base's
+/// diffuse light is weighted by what the coat lets through on the way in and out:
+///
+/// ```text
+/// f = F(cos θo) δ(wi − reflect(wo)) / cos θi
+///   + ρ/π · (1 − F(cos θo)) (1 − F(cos θi)) / (1 − F̄),     F̄ = 2 ∫₀¹ F(μ) μ dμ
+/// ```
+///
+/// The handouts' "glazed" material (seed 003: "mirror reflection and diffuse"), made energy
+/// conserving with the coupling of Kelemen & Szirmay-Kalos (2001, "A Microfacet Based Coupled
+/// Specular-Matte BRDF Model with Importance Sampling", eq. 5): the directional albedo is
+/// `F(cos θo) + (1 − F(cos θo)) ρ`, never above 1 and exactly 1 for `ρ = 1`. The diffuse
+/// term is symmetric in `wo` and `wi`, so the model is reciprocal. It does not model the
+/// light that the coat reflects back into the base (that would only add to `ρ`'s tint).
+///
+/// Sampling: the mirror lobe with probability `F / (F + (1 − F) ρ̄)` (`ρ̄` the mean channel),
+/// cosine-weighted directions otherwise. `F̄` is integrated once at construction.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Glazed<S = f32> {
+    reflectance: S,
+    eta: Eta,
+    /// `1 / (π (1 − F̄))`.
+    diffuse_scale: f32,
+}
+
+impl<S: Spectrum> Glazed<S> {
+    /// A glazed surface with base reflectance `ρ ∈ [0, 1]` and a coat of relative index
+    /// `eta`.
+    ///
+    /// # Errors
+    /// [`ParamError`] naming `reflectance` for a channel that is NaN or outside `[0, 1]`.
+    pub fn new(reflectance: S, eta: Eta) -> Result<Self, ParamError> {
+        let reflectance = unit_interval("reflectance", reflectance)?;
+        let f_avg = cosine_weighted_average(|mu| dielectric(mu, eta));
+        Ok(Self {
+            reflectance,
+            eta,
+            diffuse_scale: FRAC_1_PI / (1.0 - f_avg),
+        })
+    }
+
+    /// The directional albedo `F(cos θo) + (1 − F(cos θo)) ρ`, in closed form.
+    #[must_use]
+    pub fn albedo(&self, wo: Vec3) -> S {
+        if !(wo.z > 0.0) {
+            return S::zero();
+        }
+        let f = dielectric(wo.z, self.eta);
+        S::splat(f) + self.reflectance * (1.0 - f)
+    }
+
+    /// The probability of sampling the mirror lobe, and `F(cos θo)`.
+    #[inline]
+    fn mirror_probability(&self, wo: Vec3) -> (f32, f32) {
+        let f = dielectric(wo.z, self.eta);
+        let diffuse = (1.0 - f) * self.reflectance.average();
+        let total = f + diffuse;
+        (if total > 0.0 { f / total } else { 0.0 }, f)
+    }
+}
+
+/// `2 ∫₀¹ g(μ) μ dμ`, by 8-point Gauss-Legendre on 16 panels.
+pub(crate) fn cosine_weighted_average(g: impl Fn(f32) -> f32) -> f32 {
+    const PANELS: usize = 16;
+    let h = 1.0 / PANELS as f32;
+    let mut sum = 0.0;
+    for p in 0..PANELS {
+        let mid = (p as f32 + 0.5) * h;
+        for (x, w) in GL_NODES.iter().zip(GL_WEIGHTS) {
+            for mu in [mid - 0.5 * h * x, mid + 0.5 * h * x] {
+                sum += w * g(mu) * mu;
+            }
+        }
+    }
+    sum * h
+}
+
+impl<S: Spectrum> Bxdf for Glazed<S> {
+    type Spectrum = S;
+
+    #[inline]
+    fn eval(&self, wo: Vec3, wi: Vec3) -> S {
+        if !both_above(wo, wi) {
+            return S::zero();
+        }
+        let t = (1.0 - dielectric(wo.z, self.eta)) * (1.0 - dielectric(wi.z, self.eta));
+        self.reflectance * (t * self.diffuse_scale)
+    }
+
+    fn sample(&self, wo: Vec3, u: Vec2, uc: f32) -> Option<BxdfSample<S>> {
+        if !(wo.z > 0.0) {
+            return None;
+        }
+        let (p_mirror, f) = self.mirror_probability(wo);
+        if uc < p_mirror {
+            let wi = Vec3::new(-wo.x, -wo.y, wo.z);
+            return Some(BxdfSample {
+                wi,
+                f: S::splat(f / wi.z),
+                pdf: p_mirror,
+                lobe: Lobes::SPECULAR_REFLECTION,
+                eta: 1.0,
+            });
+        }
+        let wi = cosine_hemisphere(u);
+        let pdf = (1.0 - p_mirror) * cosine_hemisphere_pdf(wi.z);
+        if !(pdf > 0.0) {
+            return None;
+        }
+        let t = (1.0 - f) * (1.0 - dielectric(wi.z, self.eta));
+        Some(BxdfSample {
+            wi,
+            f: self.reflectance * (t * self.diffuse_scale),
+            pdf,
+            lobe: Lobes::DIFFUSE_REFLECTION,
+            eta: 1.0,
+        })
+    }
+
+    #[inline]
+    fn pdf(&self, wo: Vec3, wi: Vec3) -> f32 {
+        if !both_above(wo, wi) {
+            return 0.0;
+        }
+        (1.0 - self.mirror_probability(wo).0) * cosine_hemisphere_pdf(wi.z)
+    }
+
+    #[inline]
+    fn lobes(&self) -> Lobes {
+        Lobes::DIFFUSE_REFLECTION | Lobes::SPECULAR_REFLECTION
+    }
+}
