@@ -45,6 +45,8 @@ pub struct Ggx {
     inv_ay: f32,
     /// `1 / (π αx αy)`.
     norm: f32,
+    /// Whether reflection sampling uses the bounded sampler (the default).
+    bounded: bool,
 }
 
 impl Ggx {
@@ -58,7 +60,17 @@ impl Ggx {
             inv_ax: 1.0 / ax,
             inv_ay: 1.0 / ay,
             norm: FRAC_1_PI / (ax * ay),
+            bounded: true,
         }
+    }
+
+    /// The same distribution, choosing whether
+    /// [`sample_reflection`](NormalDistribution::sample_reflection) uses Eto & Tokuyoshi's
+    /// bounded sampler (`true`, the default) or plain visible normals (`false`, what pbrt-v4
+    /// and Mitsuba 3 do, so their pdfs can be compared).
+    #[must_use]
+    pub fn with_bounded_reflection(self, bounded: bool) -> Self {
+        Self { bounded, ..self }
     }
 
     /// An isotropic GGX distribution of width `alpha`.
@@ -211,12 +223,20 @@ impl NormalDistribution for Ggx {
 
     #[inline]
     fn sample_reflection(&self, w: Vec3, u: Vec2) -> Vec3 {
-        self.sample_visible_bounded(w, u)
+        if self.bounded {
+            self.sample_visible_bounded(w, u)
+        } else {
+            self.sample_visible(w, u)
+        }
     }
 
     #[inline]
     fn pdf_reflection(&self, w: Vec3, m: Vec3) -> f32 {
-        self.d_visible_bounded(w, m)
+        if self.bounded {
+            self.d_visible_bounded(w, m)
+        } else {
+            self.d_visible(w, m)
+        }
     }
 
     /// Slopes drawn from GGX's slope distribution, radius `r = √(u/(1−u))` (Walter et al.
