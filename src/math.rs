@@ -79,6 +79,21 @@ pub fn atan2(y: f32, x: f32) -> f32 {
     }
 }
 
+/// Square root in `f64`, for the few places where `f32` cancels (the rough dielectric's
+/// generalised half vector).
+#[inline]
+#[must_use]
+pub fn sqrt_f64(x: f64) -> f64 {
+    #[cfg(feature = "std")]
+    {
+        x.sqrt()
+    }
+    #[cfg(not(feature = "std"))]
+    {
+        libm::sqrt(x)
+    }
+}
+
 /// The magnitude of `x` with the sign bit of `sign`.
 #[inline]
 #[must_use]

@@ -103,7 +103,7 @@ impl<D: NormalDistribution> RoughDielectric<D> {
             return None;
         }
         // Upper hemisphere: h = ±s/|s| with h.z > 0.
-        let scale = 1.0 / len2.sqrt() * if s[2] < 0.0 { -1.0 } else { 1.0 };
+        let scale = 1.0 / crate::math::sqrt_f64(len2) * if s[2] < 0.0 { -1.0 } else { 1.0 };
         let h = Vec3::new(
             (s[0] * scale) as f32,
             (s[1] * scale) as f32,
