@@ -17,19 +17,25 @@
 //! Transmissive models take `wo` on either side; the relative index `eta` is
 //! `η_inside / η_outside` with the normal pointing outside.
 
+mod disney_diffuse;
+mod eon;
 mod glazed;
 mod lambert;
 mod microfacet;
 mod mirror;
+mod oren_nayar;
 mod plastic;
 mod rough_dielectric;
 mod smooth_dielectric;
 mod thin_dielectric;
 
+pub use disney_diffuse::DisneyDiffuse;
+pub use eon::EnergyPreservingOrenNayar;
 pub use glazed::Glazed;
 pub use lambert::Lambert;
 pub use microfacet::{Microfacet, RoughConductor};
 pub use mirror::Mirror;
+pub use oren_nayar::OrenNayar;
 pub use plastic::Plastic;
 pub use rough_dielectric::RoughDielectric;
 pub use smooth_dielectric::SmoothDielectric;
