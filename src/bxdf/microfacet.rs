@@ -26,10 +26,12 @@ use glam::{Vec2, Vec3};
 /// `None`. The density is the normal's density times the reflection Jacobian `1/(4 wo·m)`
 /// (Walter et al. 2007, eq. 14).
 ///
-/// Laws: reciprocal and positive. A single-scattering model loses the energy that scatters
-/// more than once between microfacets: its albedo is below 1 even with `F = 1`, the more so
-/// the rougher the surface (measured by the crate's tests and shown by `examples/albedo.rs`);
-/// the V-cavity and separable masking lose more than height-correlated Smith.
+/// Laws (measured by `tests/bxdf_microfacet.rs`): reciprocal to f32 round-off (largest
+/// relative error 3e-6 over well-conditioned pairs), positive, sampler and pdf agree
+/// (chi-square). A single-scattering model loses the energy that scatters more than once
+/// between microfacets: its albedo is below 1 even with `F = 1`, the more so the rougher the
+/// surface. Measured for GGX with `F = 1` at `θo = 60°`: 0.993 (`α = 0.05`), 0.895 (0.2),
+/// 0.698 (0.5), 0.451 (1).
 ///
 /// ```
 /// use lobe::bxdf::{Bxdf, Microfacet};

@@ -29,8 +29,12 @@ use glam::{Vec2, Vec3};
 /// normal's times the Jacobian of reflection, `1/(4 |wo·h|)`, or of refraction,
 /// `|wi·h| / (wi·h + (wo·h)/η')²` (eqs. 14 and 17).
 ///
-/// Laws: positive; reciprocal in the generalised form `f(wo, wi)/η_o² = f(wi, wo)/η_i²` in
-/// radiance mode; single-scattering, so it loses energy with roughness. The tests measure each.
+/// Laws (measured by `tests/bxdf_rough_dielectric.rs`): positive; reciprocal in the
+/// generalised form `f(wo, wi)/η_o² = f(wi, wo)/η_i²` in radiance mode (largest relative error
+/// 4e-6 over well-conditioned pairs; the refraction's Fresnel term is computed from both
+/// cosines so that it is symmetric); in importance mode the albedo is the fraction of flux
+/// scattered, at most 1, and single scattering loses some with roughness: at `θo = 30°`,
+/// η = 1.5, 0.99994 (`α = 0.02`), 0.983 (0.3), 0.854 (1).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RoughDielectric<D> {
     distribution: D,
