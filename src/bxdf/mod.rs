@@ -17,6 +17,7 @@
 //! Transmissive models take `wo` on either side; the relative index `eta` is
 //! `η_inside / η_outside` with the normal pointing outside.
 
+mod blinn_phong;
 mod disney_diffuse;
 mod eon;
 mod glazed;
@@ -24,11 +25,13 @@ mod lambert;
 mod microfacet;
 mod mirror;
 mod oren_nayar;
+mod phong;
 mod plastic;
 mod rough_dielectric;
 mod smooth_dielectric;
 mod thin_dielectric;
 
+pub use blinn_phong::{BlinnPhong, BlinnPhongForm};
 pub use disney_diffuse::DisneyDiffuse;
 pub use eon::EnergyPreservingOrenNayar;
 pub use glazed::Glazed;
@@ -36,6 +39,7 @@ pub use lambert::Lambert;
 pub use microfacet::{Microfacet, RoughConductor};
 pub use mirror::Mirror;
 pub use oren_nayar::OrenNayar;
+pub use phong::Phong;
 pub use plastic::Plastic;
 pub use rough_dielectric::RoughDielectric;
 pub use smooth_dielectric::SmoothDielectric;

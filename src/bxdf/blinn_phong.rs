@@ -1,0 +1,297 @@
+//! The Blinn-Phong BRDF of the handouts ("modified Blinn-Phong") and its normalised form.
+
+use super::phong::{
+    check_exponent, check_sum, cos_power_norm, diffuse_probability, sample_cos_power,
+    weighted_lobes,
+};
+use super::{Bxdf, BxdfSample, Lobes, both_above};
+use crate::frame::reflect;
+use crate::math::{exp, ln_1p, powf, sqrt};
+use crate::param::ParamError;
+use crate::sampling::{cosine_hemisphere, cosine_hemisphere_pdf};
+use crate::spectrum::Spectrum;
+use core::f32::consts::{FRAC_1_PI, PI};
+use glam::{Vec2, Vec3};
+
+/// Which Blinn-Phong lobe: the handout's unnormalised one or the normalised one.
+///
+/// Both are `k_s K(p) (n·h)^p` with `h` the half vector of `wo` and `wi`; they differ in the
+/// factor `K`.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum BlinnPhongForm {
+    /// `K = 1`: the "modified Blinn-Phong" of the handout (seed 003, with the geometry term
+    /// of ERRATA #7). **Not energy-normalised**: the lobe's albedo falls as `p` grows and
+    /// exceeds 1 for small `p` (up to `π k_s` at `p = 0`); see [`BlinnPhong`].
+    Modified,
+    /// `K = (p + 8)/(8π)`: Akenine-Möller, Haines & Hoffman, *Real-Time Rendering*, 3rd ed.
+    /// (2008), eq. 7.49. Approximately energy-conserving: at most 7.6% above `R + k_s`.
+    #[default]
+    Normalized,
+}
+
+/// A Lambertian term plus a Blinn-Phong lobe around the normal, in the half vector:
+///
+/// ```text
+/// f(wo, wi) = R/π + k_s K(p) (n·h)^p,    h = (wo + wi)/|wo + wi|,
+/// K = 1 (BlinnPhongForm::Modified)  or  (p + 8)/(8π) (BlinnPhongForm::Normalized)
+/// ```
+///
+/// for `wo`, `wi` above the surface (zero otherwise). Blinn 1977, "Models of light
+/// reflection for computer synthesized pictures"; the handout's "modified Blinn-Phong"
+/// (seed 003, ERRATA #7: its geometry factor is `max(0, n·l)/r²`, supplied by the renderer,
+/// not part of `f`) and the normalised form of Real-Time Rendering, 3rd ed., eq. 7.49. Both
+/// are reciprocal: `h` is symmetric in `wo` and `wi`.
+///
+/// This is the *shading-model* Blinn-Phong. The exactly normalised Blinn-Phong *distribution*
+/// `D = (p + 2)/(2π) (n·m)^p` (ERRATA #8), with masking and Fresnel, is
+/// [`BlinnPhongNdf`](crate::microfacet::BlinnPhongNdf) inside a microfacet model.
+///
+/// **Parameters.** `R, k_s ∈ [0, 1]` per channel with `R + k_s ≤ 1` in every channel, and the
+/// exponent `p ∈ [0, 10⁶]` ([`BlinnPhong::MAX_EXPONENT`]).
+///
+/// **Energy** (measured in `tests/bxdf_blinn_phong.rs`). At normal incidence the lobe's albedo
+/// has the closed form `k_s K(p) · 8π (p + 2^(−p/2)) / ((p + 2)(p + 4))`
+/// ([`albedo_at_normal`](BlinnPhong::albedo_at_normal); with `wo = n`, `θi = 2θh`), and it is
+/// the largest over the viewing angles: measured at θo = 0°, 15°, …, 75°, 89° for
+/// `p = 0, 1, 8.76, 10, 30, 100, 1000`, the albedo falls with θo (for `p = 0` it is constant),
+/// and at θo = 0° it matches the closed form within the Monte Carlo error. The closed form,
+/// for `k_s = 1`, `R = 0`:
+///
+/// | `p` | 0 | 1 | 2 | 5 | 10 | 20 | 30 | 100 | 1000 |
+/// | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |
+/// | `Modified` | 3.142 | 2.860 | 2.618 | 2.065 | 1.501 | 0.952 | 0.693 | 0.237 | 0.025 |
+/// | `Normalized` | 1.000 | 1.024 | 1.042 | 1.068 | 1.075 | 1.061 | 1.048 | 1.018 | 1.002 |
+///
+/// and measured away from the normal (θo = 0°, 30°, 60°, 80°, 89°; standard errors ≤ 0.006):
+/// `Modified`, `p = 1`: 2.861, 2.738, 2.349, 1.937, 1.705; `Normalized`, `p = 10`: 1.075,
+/// 0.866, 0.431, 0.190, 0.114.
+///
+/// So the `Modified` form **gains energy** (albedo above 1) whenever `R + k_s · 8π (p +
+/// 2^(−p/2))/((p + 2)(p + 4)) > 1`: for `k_s = 1` at every `p` below 18.7, by up to a factor
+/// π (at `p = 0`, where `f = R/π + k_s` is constant). The `Normalized` form is approximately
+/// energy-conserving: with `R + k_s ≤ 1` its albedo is at most `R + 1.0752 k_s ≤ 1.0752`
+/// (the maximum of the lobe's factor, at `p ≈ 8.76`), and it tends to `R + k_s` as `p` grows.
+///
+/// **Sampling.** With probability `P_d = R̄/(R̄ + k̄_s)` (channel averages; `1` for a black
+/// model) the diffuse lobe, cosine-weighted; otherwise the half vector `h` with density
+/// `(p + 1)/(2π) (n·h)^p` and `wi = reflect(wo, h)`, whose density is that over
+/// `4 (wo·h)`. A reflected direction below the horizon is the sampler's missing mass:
+/// `sample` returns `None`. [`Bxdf::pdf`] is the mixture of the two densities and a sample's
+/// `f` the whole BRDF.
+///
+/// **Precision.** `(n·h)^p` is computed as `exp(p/2 · ln(1 − sin² θh))` from
+/// `sin² θh = (s_x² + s_y²)/|s|²`, `s = wo + wi`, which has no cancellation near the normal
+/// (where a large `p` magnifies it) and is exactly symmetric in `wo` and `wi`.
+///
+/// **Laws** (measured in `tests/bxdf_blinn_phong.rs`):
+/// * positive and finite for every finite unit input, grazing (`z = 10⁻⁷`), exact mirror and
+///   normal configurations and opposite directions whose sum underflows included;
+/// * reciprocal exactly: relative error 0 over 20 000 random pairs and 2 000 pairs with
+///   `h` near the normal, for every exponent tested (0 to 10⁶);
+/// * energy as above: conserved by `Normalized` up to its 7.6% margin, not by `Modified`;
+/// * the sampler matches its density (the same for both forms): for `k_s = 1` the chi-square
+///   p-values at θo = 0°, 30°, 60°, 80°, 89° (200 000 samples) are 0.91, 0.25, 0.31, 0.44,
+///   0.026 (`p = 1`), 0.73, 0.94, 0.94, 0.60, 0.010 (`p = 10`) and 0.38, 0.51, 0.48, 0.68,
+///   0.80 (`p = 100`), all above the Šidák-corrected level (at 89°, `p = 10`, four seeds of
+///   2 000 000 samples give 0.87, 0.15, 0.14, 0.57); `sample` agrees with `eval` and `pdf`
+///   exactly (one code path computes the lobe for both).
+///
+/// ```
+/// use lobe::bxdf::{BlinnPhong, BlinnPhongForm, Bxdf};
+/// use lobe::{Vec2, Vec3};
+/// let shiny = BlinnPhong::new(0.5_f32, 0.5, 32.0, BlinnPhongForm::Normalized)?;
+/// // Mirror configuration: h = n, so f = R/π + k_s (p + 8)/(8π).
+/// let (wo, wi) = (Vec3::new(0.6, 0.0, 0.8), Vec3::new(-0.6, 0.0, 0.8));
+/// let peak = (0.5 + 0.5 * 40.0 / 8.0) / core::f32::consts::PI;
+/// assert!((shiny.eval(wo, wi) - peak).abs() < 1e-6 * peak);
+/// // The handout's model reflects more than it receives for a broad lobe.
+/// let seed = BlinnPhong::new(0.0_f32, 1.0, 1.0, BlinnPhongForm::Modified)?;
+/// assert!(seed.albedo_at_normal() > 2.8);
+/// if let Some(s) = shiny.sample(wo, Vec2::new(0.3, 0.7), 0.9) {
+///     assert!(s.wi.z > 0.0 && s.pdf > 0.0);
+/// }
+/// # Ok::<(), lobe::ParamError>(())
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BlinnPhong<S = f32> {
+    diffuse: S,
+    ks: S,
+    exponent: f32,
+    form: BlinnPhongForm,
+    /// `R / π`.
+    diffuse_over_pi: S,
+    /// `k_s K(p)`.
+    glossy: S,
+    /// The probability of sampling the diffuse lobe.
+    p_diffuse: f32,
+    /// `(1 − P_d)(p + 1)/(2π) / 2`: the glossy share of the pdf, over `(n·h)^p / |wo + wi|`.
+    pdf_glossy: f32,
+}
+
+impl<S: Spectrum> BlinnPhong<S> {
+    /// The largest accepted exponent.
+    pub const MAX_EXPONENT: f32 = 1e6;
+
+    /// A Blinn-Phong BRDF with diffuse reflectance `R`, specular weight `ks`, exponent
+    /// `exponent` and the lobe's `form`.
+    ///
+    /// # Errors
+    /// [`ParamError`] naming `diffuse` or `ks` for a channel that is NaN or outside `[0, 1]`,
+    /// `diffuse + ks` for a channel where their sum exceeds 1, or `exponent` for NaN or a value
+    /// outside `[0, 1e6]`.
+    pub fn new(diffuse: S, ks: S, exponent: f32, form: BlinnPhongForm) -> Result<Self, ParamError> {
+        let diffuse = crate::param::unit_interval("diffuse", diffuse)?;
+        let ks = crate::param::unit_interval("ks", ks)?;
+        check_sum(diffuse, ks, "diffuse + ks")?;
+        let p = check_exponent(exponent)?;
+        let p_diffuse = diffuse_probability(diffuse, ks);
+        Ok(Self {
+            diffuse,
+            ks,
+            exponent: p,
+            form,
+            diffuse_over_pi: diffuse * FRAC_1_PI,
+            glossy: ks * lobe_factor(form, p),
+            p_diffuse,
+            pdf_glossy: (1.0 - p_diffuse) * cos_power_norm(p) * 0.5,
+        })
+    }
+
+    /// The diffuse reflectance `R`.
+    #[inline]
+    #[must_use]
+    pub fn diffuse(&self) -> S {
+        self.diffuse
+    }
+
+    /// The specular weight `k_s`.
+    #[inline]
+    #[must_use]
+    pub fn ks(&self) -> S {
+        self.ks
+    }
+
+    /// The exponent `p`.
+    #[inline]
+    #[must_use]
+    pub fn exponent(&self) -> f32 {
+        self.exponent
+    }
+
+    /// Which lobe.
+    #[inline]
+    #[must_use]
+    pub fn form(&self) -> BlinnPhongForm {
+        self.form
+    }
+
+    /// The directional albedo at normal incidence, in closed form:
+    /// `R + k_s K(p) · 8π (p + 2^(−p/2)) / ((p + 2)(p + 4))`. (With `wo = n`, `θi = 2θh` and
+    /// `dωi = 4 cos θh dωh`, so the lobe integrates `cos^(p+1) θh cos 2θh` over
+    /// `θh ∈ [0, π/4]`.) It is the largest albedo over the viewing angles, as measured for
+    /// the exponents tested; above 1 it measures the model's energy gain.
+    #[must_use]
+    pub fn albedo_at_normal(&self) -> S {
+        let p = self.exponent;
+        let lobe =
+            8.0 * PI * (p + exp(-0.5 * core::f32::consts::LN_2 * p)) / ((p + 2.0) * (p + 4.0));
+        self.diffuse + self.glossy * lobe
+    }
+
+    /// `((n·h)^p, |wo + wi|)` for `wo`, `wi` above the surface; `(0, 1)` when `wo + wi`
+    /// underflows (subnormal, opposite grazing directions).
+    #[inline]
+    fn lobe(&self, wo: Vec3, wi: Vec3) -> (f32, f32) {
+        let s = wo + wi;
+        let sxy = s.x * s.x + s.y * s.y;
+        let s2 = sxy + s.z * s.z;
+        if !(s2 >= f32::MIN_POSITIVE) {
+            return (0.0, 1.0);
+        }
+        let sin2 = sxy / s2;
+        let cos_pow = if sin2 < 0.5 {
+            exp(0.5 * self.exponent * ln_1p(-sin2))
+        } else {
+            powf(s.z * s.z / s2, 0.5 * self.exponent)
+        };
+        (cos_pow, sqrt(s2))
+    }
+
+    /// The BRDF from `(n·h)^p`.
+    #[inline]
+    fn value(&self, cos_pow: f32) -> S {
+        self.diffuse_over_pi + self.glossy * cos_pow
+    }
+
+    /// The mixture density from `cos θi`, `(n·h)^p` and `|wo + wi| = 2 (wo·h)`.
+    #[inline]
+    fn density(&self, cos_i: f32, cos_pow: f32, len: f32) -> f32 {
+        self.p_diffuse * cosine_hemisphere_pdf(cos_i) + self.pdf_glossy * cos_pow / len
+    }
+}
+
+/// `K(p)`: 1 for the handout's form, `(p + 8)/(8π)` for the normalised one.
+fn lobe_factor(form: BlinnPhongForm, p: f32) -> f32 {
+    match form {
+        BlinnPhongForm::Modified => 1.0,
+        BlinnPhongForm::Normalized => (p + 8.0) * 0.125 * FRAC_1_PI,
+    }
+}
+
+impl<S: Spectrum> Bxdf for BlinnPhong<S> {
+    type Spectrum = S;
+
+    #[inline]
+    fn eval(&self, wo: Vec3, wi: Vec3) -> S {
+        if both_above(wo, wi) {
+            self.value(self.lobe(wo, wi).0)
+        } else {
+            S::zero()
+        }
+    }
+
+    #[inline]
+    fn sample(&self, wo: Vec3, u: Vec2, uc: f32) -> Option<BxdfSample<S>> {
+        if !(wo.z > 0.0) {
+            return None;
+        }
+        let (wi, lobe_kind) = if uc < self.p_diffuse {
+            (cosine_hemisphere(u), Lobes::DIFFUSE_REFLECTION)
+        } else {
+            let h = sample_cos_power(u, self.exponent);
+            (reflect(wo, h), Lobes::GLOSSY_REFLECTION)
+        };
+        // Also catches wo·h ≤ 0, which reflects wo below the surface.
+        if !(wi.z > 0.0) {
+            return None;
+        }
+        // One evaluation of the lobe serves both the value and the density.
+        let (cos_pow, len) = self.lobe(wo, wi);
+        let pdf = self.density(wi.z, cos_pow, len);
+        if !(pdf > 0.0) {
+            return None;
+        }
+        Some(BxdfSample {
+            wi,
+            f: self.value(cos_pow),
+            pdf,
+            lobe: lobe_kind,
+            eta: 1.0,
+        })
+    }
+
+    #[inline]
+    fn pdf(&self, wo: Vec3, wi: Vec3) -> f32 {
+        if both_above(wo, wi) {
+            let (cos_pow, len) = self.lobe(wo, wi);
+            self.density(wi.z, cos_pow, len)
+        } else {
+            0.0
+        }
+    }
+
+    #[inline]
+    fn lobes(&self) -> Lobes {
+        weighted_lobes(self.diffuse, self.ks)
+    }
+}

@@ -1,0 +1,317 @@
+//! The modified, normalised Phong BRDF of Lafortune & Willems (1994).
+
+use super::{Bxdf, BxdfSample, Lobes, both_above};
+use crate::frame::Frame;
+use crate::math::{exp, exp_m1, ln, ln_1p, powf, sin_cos, sqrt};
+use crate::param::ParamError;
+use crate::sampling::{cosine_hemisphere, cosine_hemisphere_pdf};
+use crate::spectrum::Spectrum;
+use core::f32::consts::{FRAC_1_PI, TAU};
+use glam::{Vec2, Vec3};
+
+/// The modified, normalised Phong BRDF: a Lambertian term plus a cosine-power lobe around
+/// the mirror direction,
+///
+/// ```text
+/// f(wo, wi) = k_d/π + k_s (p + 2)/(2π) max(0, r·wi)^p,    r = reflect(wo, n) = (−wo.x, −wo.y, wo.z)
+/// ```
+///
+/// for `wo`, `wi` above the surface (zero otherwise). Lafortune & Willems 1994, "Using the
+/// modified Phong reflectance model for physically based rendering", Tech. Rep. CW 197,
+/// KU Leuven, the BRDF and its normalisation (ERRATA #12: the handout names Phong only).
+/// `r·wi` equals `wo·reflect(wi, n)`, so the lobe is reciprocal. The original Phong
+/// *shading* term `k_s (r·v)^p`, without the normalisation, is neither reciprocal nor
+/// energy-conserving and is not offered.
+///
+/// **Parameters.** `k_d, k_s ∈ [0, 1]` per channel with `k_d + k_s ≤ 1` in every channel,
+/// and the exponent `p ∈ [0, 10⁶]` ([`Phong::MAX_EXPONENT`]). `p = 0` makes the glossy lobe
+/// uniform over the hemisphere around `r`.
+///
+/// **Sampling.** With probability `P_d = k̄_d/(k̄_d + k̄_s)` (channel averages; `1` for a
+/// black model) the diffuse lobe, cosine-weighted; otherwise the glossy lobe, with density
+/// `(p + 1)/(2π) cos^p α` around `r` (`α` the angle between `wi` and `r`), drawn in
+/// [`Frame::from_normal(r)`](Frame::from_normal). A glossy direction below the horizon is
+/// the sampler's missing mass: `sample` returns `None` for it. [`Bxdf::pdf`] is the mixture
+/// `P_d cos θi/π + (1 − P_d)(p + 1)/(2π) cos^p α`, and a sample's `f` is the whole BRDF, both
+/// lobes.
+///
+/// **Precision.** `1 − cos α = |r − wi|²/(2|wo||wi|)` is computed without the cancellation of
+/// `1 − r·wi`, and `cos^p α = exp(p ln(1 − (1 − cos α)))`, so that a lobe of exponent 10⁶
+/// keeps its shape next to the mirror direction (it matches an f64 evaluation within 10⁻⁴
+/// relative at 10⁻⁴…3·10⁻³ rad from it), and the value is insensitive, to first order, to
+/// input directions that are unit only up to rounding. The formula is symmetric in `wo` and `wi` operation by operation: reciprocity
+/// holds exactly in `f32`.
+///
+/// **Laws** (measured in `tests/bxdf_phong.rs`):
+/// * positive and finite for every finite unit input, grazing (`z = 10⁻⁷`) and the exact
+///   mirror configuration included;
+/// * reciprocal exactly: the relative error `|f(wo, wi) − f(wi, wo)|/f` is 0 over 20 000
+///   random pairs and 2 000 pairs near the mirror configuration, for every exponent tested
+///   (0 to 10⁶);
+/// * energy-conserving for `k_d + k_s ≤ 1`: the directional albedo is `k_d + k_s` at normal
+///   incidence (the lobe around `r = n` is never clipped, and `(p + 2)/(2π)` normalises
+///   `cos^p α cos θi` over it exactly) and falls with the viewing angle as the horizon clips
+///   the lobe; as `p → ∞` it tends to `k_d + k_s cos θo`. Measured glossy albedo (`k_s = 1`,
+///   `k_d = 0`; standard errors 10⁻³ or less; the two independent estimators agree):
+///
+///   | `p` | θo = 0° | 30° | 60° | 80° | 89° |
+///   | --- | --- | --- | --- | --- | --- |
+///   | 0 | 1.000 | 0.934 | 0.751 | 0.588 | 0.510 |
+///   | 1 | 1.000 | 0.882 | 0.610 | 0.411 | 0.328 |
+///   | 10 | 1.000 | 0.866 | 0.505 | 0.228 | 0.132 |
+///   | 100 | 1.000 | 0.866 | 0.500 | 0.175 | 0.049 |
+///   | 10⁵ | 1.000 | 0.866 | 0.500 | 0.174 | 0.017 |
+///
+///   So the albedo never exceeds `k_d + k_s ≤ 1`, which
+///   [`albedo_upper_bound`](Phong::albedo_upper_bound) returns. Away from the normal the
+///   directional albedo has no closed form (the horizon clips the lobe), so none is offered;
+/// * the sampler matches its density: for `k_s = 1` the chi-square p-values at θo = 0°, 30°,
+///   60°, 80°, 89° (200 000 samples) are 0.71, 0.96, 0.70, 0.42, 0.17 (`p = 1`), 0.19, 0.53,
+///   0.23, 0.21, 0.040 (`p = 10`) and 0.25, 0.99, 0.72, 0.97, 0.22 (`p = 100`), all above
+///   the Šidák-corrected level; `sample` agrees with `eval` and `pdf` exactly (one code path
+///   computes the lobe for both). At grazing viewing angles about half of the glossy samples
+///   fall below the horizon and return `None`.
+///
+/// ```
+/// use lobe::bxdf::{Bxdf, Phong};
+/// use lobe::{Vec2, Vec3};
+/// let plastic = Phong::new(0.5_f32, 0.4, 50.0)?;
+/// let wo = Vec3::new(0.6, 0.0, 0.8);
+/// // In the mirror direction the lobe peaks: k_d/π + k_s (p + 2)/(2π).
+/// let mirror = Vec3::new(-0.6, 0.0, 0.8);
+/// let peak = 0.5 / core::f32::consts::PI + 0.4 * 52.0 / core::f32::consts::TAU;
+/// assert!((plastic.eval(wo, mirror) - peak).abs() < 1e-5 * peak);
+/// // Reciprocal.
+/// let wi = Vec3::new(-0.48, 0.36, 0.8);
+/// assert_eq!(plastic.eval(wo, wi), plastic.eval(wi, wo));
+/// if let Some(s) = plastic.sample(wo, Vec2::new(0.3, 0.7), 0.9) {
+///     assert!(s.wi.z > 0.0 && s.pdf > 0.0);
+/// }
+/// # Ok::<(), lobe::ParamError>(())
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Phong<S = f32> {
+    kd: S,
+    ks: S,
+    exponent: f32,
+    /// `k_d / π`.
+    diffuse: S,
+    /// `k_s (p + 2)/(2π)`.
+    glossy: S,
+    /// The probability of sampling the diffuse lobe.
+    p_diffuse: f32,
+    /// `(1 − P_d)(p + 1)/(2π)`: the glossy lobe's share of the pdf, over `cos^p α`.
+    pdf_glossy: f32,
+}
+
+impl<S: Spectrum> Phong<S> {
+    /// The largest accepted exponent.
+    pub const MAX_EXPONENT: f32 = 1e6;
+
+    /// A Phong BRDF with diffuse weight `kd`, glossy weight `ks` and exponent `exponent`.
+    ///
+    /// # Errors
+    /// [`ParamError`] naming `kd` or `ks` for a channel that is NaN or outside `[0, 1]`,
+    /// `kd + ks` for a channel whose sum exceeds 1, or `exponent` for NaN or a value outside
+    /// `[0, 1e6]`.
+    pub fn new(kd: S, ks: S, exponent: f32) -> Result<Self, ParamError> {
+        let kd = crate::param::unit_interval("kd", kd)?;
+        let ks = crate::param::unit_interval("ks", ks)?;
+        check_sum(kd, ks, "kd + ks")?;
+        let p = check_exponent(exponent)?;
+        let p_diffuse = diffuse_probability(kd, ks);
+        Ok(Self {
+            kd,
+            ks,
+            exponent: p,
+            diffuse: kd * FRAC_1_PI,
+            glossy: ks * ((p + 2.0) * 0.5 * FRAC_1_PI),
+            p_diffuse,
+            pdf_glossy: (1.0 - p_diffuse) * cos_power_norm(p),
+        })
+    }
+
+    /// The diffuse weight `k_d`.
+    #[inline]
+    #[must_use]
+    pub fn kd(&self) -> S {
+        self.kd
+    }
+
+    /// The glossy weight `k_s`.
+    #[inline]
+    #[must_use]
+    pub fn ks(&self) -> S {
+        self.ks
+    }
+
+    /// The exponent `p`.
+    #[inline]
+    #[must_use]
+    pub fn exponent(&self) -> f32 {
+        self.exponent
+    }
+
+    /// `k_d + k_s`: the directional albedo at normal incidence, and its maximum over all
+    /// viewing directions (the horizon clips the glossy lobe elsewhere). At most 1.
+    #[inline]
+    #[must_use]
+    pub fn albedo_upper_bound(&self) -> S {
+        self.kd + self.ks
+    }
+
+    /// `cos^p α` for the angle `α` between `r = reflect(wo, n)` and `wi`, zero beyond 90°.
+    #[inline]
+    fn lobe(&self, wo: Vec3, wi: Vec3) -> f32 {
+        // r − wi up to the sign of x and y, which the square drops; symmetric in wo, wi.
+        let d = Vec3::new(wo.x + wi.x, wo.y + wi.y, wo.z - wi.z);
+        let one_minus_cos =
+            0.5 * d.length_squared() / sqrt(wo.length_squared() * wi.length_squared());
+        cos_power(one_minus_cos, self.exponent)
+    }
+
+    /// The BRDF from the lobe's value `cos^p α`.
+    #[inline]
+    fn value(&self, lobe: f32) -> S {
+        self.diffuse + self.glossy * lobe
+    }
+
+    /// The mixture density from `cos θi` and `cos^p α`.
+    #[inline]
+    fn density(&self, cos_i: f32, lobe: f32) -> f32 {
+        self.p_diffuse * cosine_hemisphere_pdf(cos_i) + self.pdf_glossy * lobe
+    }
+}
+
+impl<S: Spectrum> Bxdf for Phong<S> {
+    type Spectrum = S;
+
+    #[inline]
+    fn eval(&self, wo: Vec3, wi: Vec3) -> S {
+        if both_above(wo, wi) {
+            self.value(self.lobe(wo, wi))
+        } else {
+            S::zero()
+        }
+    }
+
+    #[inline]
+    fn sample(&self, wo: Vec3, u: Vec2, uc: f32) -> Option<BxdfSample<S>> {
+        if !(wo.z > 0.0) {
+            return None;
+        }
+        let (wi, lobe_kind) = if uc < self.p_diffuse {
+            (cosine_hemisphere(u), Lobes::DIFFUSE_REFLECTION)
+        } else {
+            let r = Vec3::new(-wo.x, -wo.y, wo.z);
+            let local = sample_cos_power(u, self.exponent);
+            (
+                Frame::from_normal(r).to_world(local),
+                Lobes::GLOSSY_REFLECTION,
+            )
+        };
+        if !(wi.z > 0.0) {
+            return None;
+        }
+        // One evaluation of the lobe serves both the value and the density.
+        let lobe = self.lobe(wo, wi);
+        let pdf = self.density(wi.z, lobe);
+        if !(pdf > 0.0) {
+            return None;
+        }
+        Some(BxdfSample {
+            wi,
+            f: self.value(lobe),
+            pdf,
+            lobe: lobe_kind,
+            eta: 1.0,
+        })
+    }
+
+    #[inline]
+    fn pdf(&self, wo: Vec3, wi: Vec3) -> f32 {
+        if both_above(wo, wi) {
+            self.density(wi.z, self.lobe(wo, wi))
+        } else {
+            0.0
+        }
+    }
+
+    #[inline]
+    fn lobes(&self) -> Lobes {
+        weighted_lobes(self.kd, self.ks)
+    }
+}
+
+/// Refuses a channel where the two weights sum above 1; the error names `param`.
+pub(super) fn check_sum<S: Spectrum>(kd: S, ks: S, param: &'static str) -> Result<(), ParamError> {
+    let sum = kd + ks;
+    for i in 0..S::CHANNELS {
+        let s = sum.channel(i);
+        if !(s <= 1.0) {
+            return Err(ParamError::new(param, s, "[0, 1]"));
+        }
+    }
+    Ok(())
+}
+
+/// Accepts an exponent in `[0, 1e6]`, refusing NaN.
+pub(super) fn check_exponent(p: f32) -> Result<f32, ParamError> {
+    if (0.0..=1e6).contains(&p) {
+        Ok(p)
+    } else {
+        Err(ParamError::new("exponent", p, "[0, 1000000]"))
+    }
+}
+
+/// The probability of sampling the diffuse lobe: the diffuse share of the channel-averaged
+/// weights, `1` when both are black.
+pub(super) fn diffuse_probability<S: Spectrum>(kd: S, ks: S) -> f32 {
+    let (d, s) = (kd.average(), ks.average());
+    if d + s > 0.0 { d / (d + s) } else { 1.0 }
+}
+
+/// The lobes with a non-zero weight (diffuse alone for a black model: what its sampler
+/// reports).
+pub(super) fn weighted_lobes<S: Spectrum>(kd: S, ks: S) -> Lobes {
+    let mut lobes = Lobes::NONE;
+    if !kd.is_black() || ks.is_black() {
+        lobes |= Lobes::DIFFUSE_REFLECTION;
+    }
+    if !ks.is_black() {
+        lobes |= Lobes::GLOSSY_REFLECTION;
+    }
+    lobes
+}
+
+/// `cos^p` of an angle given `1 − cos ≥ 0`; zero at and beyond 90° (`1 − cos ≥ 1`), even for
+/// `p = 0`. Near the axis it is `exp(p ln(1 − t))` from the precise `t = 1 − cos`.
+#[inline]
+pub(super) fn cos_power(one_minus_cos: f32, p: f32) -> f32 {
+    if one_minus_cos < 0.5 {
+        exp(p * ln_1p(-one_minus_cos))
+    } else if one_minus_cos < 1.0 {
+        // 1 − t is exact here (Sterbenz).
+        powf(1.0 - one_minus_cos, p)
+    } else {
+        0.0
+    }
+}
+
+/// `(p + 1)/(2π)`: the normalisation of `cos^p θ` over the hemisphere.
+#[inline]
+pub(super) fn cos_power_norm(p: f32) -> f32 {
+    (p + 1.0) * 0.5 * FRAC_1_PI
+}
+
+/// A direction around `+z` with density `(p + 1)/(2π) cos^p θ` on the hemisphere:
+/// `cos θ = u^(1/(p+1))`, the inverse of the CDF `1 − cos^(p+1)` (with `u` for `1 − u`), with
+/// `sin θ = √(−expm1(2 ln u/(p + 1)))`, which keeps its digits for large `p`.
+#[inline]
+pub(super) fn sample_cos_power(u: Vec2, p: f32) -> Vec3 {
+    let l = ln(u.x.max(f32::MIN_POSITIVE)) / (p + 1.0);
+    let cos = exp(l);
+    let sin = sqrt((-exp_m1(2.0 * l)).max(0.0));
+    let (s, c) = sin_cos(TAU * u.y);
+    Vec3::new(sin * c, sin * s, cos)
+}

@@ -1,0 +1,342 @@
+//! The modified, normalised Phong BRDF (Lafortune & Willems 1994; ERRATA #12) through the law
+//! suite, its sharp lobes, its closed-form albedo at normal incidence, reference values and
+//! refused parameters.
+
+mod common;
+
+use common::k_sigma;
+use common::laws::{
+    Model, assert_all_laws, assert_consistent, assert_reciprocal, assert_total, viewer_directions,
+};
+use lobe::bxdf::{Bxdf, Lobes, Phong};
+use lobe::verify::{BxdfCheck, albedo_sampled};
+use lobe::{Vec2, Vec3};
+
+fn phong(kd: f32, ks: f32, p: f32) -> Model {
+    Model::new(
+        format!("Phong kd={kd} ks={ks} p={p}"),
+        Phong::new(kd, ks, p).unwrap(),
+    )
+}
+
+/// The settings of the full law suite: pure glossy lobes of exponent 0 to 100 and mixtures.
+/// The chi-square test bins equally in `cos θ × φ`; sharper lobes are tested below.
+const LAW_SETTINGS: [(f32, f32, f32); 6] = [
+    (0.0, 1.0, 1.0),
+    (0.0, 1.0, 10.0),
+    (0.0, 1.0, 100.0),
+    (0.2, 0.8, 0.0),
+    (0.5, 0.5, 10.0),
+    (0.7, 0.3, 100.0),
+];
+
+#[test]
+fn phong_obeys_every_law() {
+    for (kd, ks, p) in LAW_SETTINGS {
+        assert_all_laws(&phong(kd, ks, p), LAW_SETTINGS.len());
+    }
+}
+
+/// Exponents 10³…10⁶, where the lobe fits in a bin or two of the chi-square test and cosine
+/// sampling rarely finds it: totality, exact reciprocity, sample/eval/pdf consistency, and
+/// the energy bound by the model's own sampler (whose weight is nearly constant there).
+#[test]
+fn sharp_lobes_are_consistent_and_conserve_energy() {
+    let settings = [
+        (0.0, 1.0, 1e3),
+        (0.0, 1.0, 1e4),
+        (0.0, 1.0, 1e6),
+        (0.5, 0.5, 1e6),
+    ];
+    let k = k_sigma(0.01, settings.len() * 5);
+    for (kd, ks, p) in settings {
+        let model = phong(kd, ks, p);
+        assert_total(&model, 20_000);
+        let worst = assert_reciprocal(&model, 20_000, 1e-5);
+        assert_eq!(worst, 0.0, "{}: the formula is symmetric", model.name);
+        assert_consistent(&model, 1e-4);
+        // Random pairs rarely land in so narrow a lobe: check reciprocity on pairs near the
+        // mirror configuration, where the lobe is large.
+        let mut rng = lobe::verify::Pcg32::new(5, 0);
+        let spread = 2.0 / p.sqrt();
+        for _ in 0..2_000 {
+            let wo = lobe::sampling::uniform_hemisphere(rng.next_vec2());
+            let d = (rng.next_vec2() - 0.5) * spread;
+            let wi = (Vec3::new(-wo.x + d.x, -wo.y + d.y, wo.z)).normalize();
+            if wo.z > 0.0 && wi.z > 0.0 {
+                let (f, b) = (model.bxdf.eval(wo, wi), model.bxdf.eval(wi, wo));
+                assert!(
+                    f > 0.0 && f == b,
+                    "{}: f({wo}, {wi}) = {f}, reversed {b}",
+                    model.name
+                );
+            }
+        }
+        for wo in viewer_directions(&model) {
+            let a = albedo_sampled(model.bxdf.as_ref(), wo, &BxdfCheck::default());
+            assert!(
+                a.mean <= f64::from(kd + ks) + k * a.std_err + 1e-6,
+                "{}: albedo {a} at {wo:?}",
+                model.name
+            );
+        }
+    }
+}
+
+/// At normal incidence `r = n` and the lobe is never clipped: the albedo is exactly
+/// `k_d + k_s`, and (measured) the largest over the viewing angles.
+#[test]
+fn albedo_is_kd_plus_ks_at_normal_incidence_and_falls_from_there() {
+    let settings = [
+        (0.0, 1.0, 0.0),
+        (0.0, 1.0, 1.0),
+        (0.0, 1.0, 10.0),
+        (0.0, 1.0, 100.0),
+        (0.3, 0.6, 30.0),
+        (0.0, 1.0, 1e5),
+    ];
+    let angles = [0.0_f32, 15.0, 30.0, 45.0, 60.0, 75.0, 89.0];
+    let k = k_sigma(0.01, settings.len() * angles.len());
+    for (kd, ks, p) in settings {
+        let model = phong(kd, ks, p);
+        let exact = f64::from(kd + ks);
+        let mut previous = f64::INFINITY;
+        for t in angles {
+            let wo = common::dir(t, 0.4);
+            let a = albedo_sampled(model.bxdf.as_ref(), wo, &BxdfCheck::default());
+            // The estimate averages f32 weights, whose rounding the law suite allows for as
+            // 1e-6 relative; it matters only at p = 10⁵, where the standard error is 2e-8.
+            let allowance = k * a.std_err + 1e-6 * exact;
+            if t == 0.0 {
+                assert!(
+                    (a.mean - exact).abs() <= allowance,
+                    "{}: albedo {a} at normal",
+                    model.name
+                );
+            } else {
+                assert!(
+                    a.mean <= exact + allowance,
+                    "{}: albedo {a} at {t}°",
+                    model.name
+                );
+            }
+            // Falls with the viewing angle (within the noise of two estimates).
+            assert!(
+                a.mean <= previous + 2.0 * k * a.std_err,
+                "{}: albedo {a} at {t}° above the previous angle's {previous}",
+                model.name
+            );
+            eprintln!("{}: albedo at {t}°: {a}", model.name);
+            previous = a.mean;
+        }
+    }
+}
+
+/// Values of `f` and `pdf` computed independently in f64 (a Python script from the formula:
+/// `f = kd/π + ks (p+2)/(2π) max(0, r·wi)^p`, `pdf = P_d cos θi/π + (1 − P_d)(p+1)/(2π)
+/// max(0, r·wi)^p`, `P_d = kd/(kd + ks)`), for `kd = 0.3, ks = 0.6, p = 20`.
+#[test]
+fn values_match_an_independent_computation() {
+    let m = Phong::new(0.3_f32, 0.6, 20.0).unwrap();
+    let cases = [
+        (
+            Vec3::new(0.3, -0.2, 0.9),
+            Vec3::new(-0.25, 0.3, 0.85),
+            1.898_034_105_278_850_5,
+            2.008_200_871_858_291_3,
+        ),
+        (
+            Vec3::new(0.3, -0.2, 0.9),
+            Vec3::new(0.5, 0.5, 0.3),
+            0.095_492_965_908_970_25,
+            0.041_440_417_493_793_37,
+        ),
+        (
+            Vec3::new(0.8, 0.1, 0.2),
+            Vec3::new(-0.7, 0.0, 0.3),
+            1.499_783_633_829_601_6,
+            1.531_195_329_005_028_6,
+        ),
+    ];
+    for (wo, wi, f, pdf) in cases {
+        let (wo, wi) = (wo.normalize(), wi.normalize());
+        let (got_f, got_pdf) = (f64::from(m.eval(wo, wi)), f64::from(m.pdf(wo, wi)));
+        assert!(
+            (got_f - f).abs() <= 1e-5 * f,
+            "f({wo}, {wi}) = {got_f}, expected {f}"
+        );
+        assert!(
+            (got_pdf - pdf).abs() <= 1e-5 * pdf,
+            "pdf({wo}, {wi}) = {got_pdf}, expected {pdf}"
+        );
+    }
+    // One-sided.
+    let (wo, wi) = (Vec3::new(0.6, 0.0, 0.8), Vec3::new(-0.6, 0.0, 0.8));
+    assert!(m.eval(wo, wi) > 0.0);
+    for (a, b) in [
+        (wo, -wi),
+        (-wo, wi),
+        (-wo, -wi),
+        (Vec3::X, wi),
+        (wo, Vec3::Y),
+    ] {
+        assert_eq!(m.eval(a, b), 0.0);
+        assert_eq!(m.pdf(a, b), 0.0);
+    }
+    assert!(m.sample(-wo, Vec2::splat(0.5), 0.5).is_none());
+    assert!(m.sample(Vec3::X, Vec2::splat(0.5), 0.5).is_none());
+}
+
+/// For a large exponent `cos^p α` is computed from `1 − cos α` without cancellation: it
+/// matches an f64 evaluation from the angle at 10⁻⁴…10⁻² rad from the mirror direction.
+#[test]
+fn large_exponents_keep_their_shape_near_the_mirror_direction() {
+    for p in [1e4_f32, 1e5, 1e6] {
+        let m = Phong::new(0.0_f32, 1.0, p).unwrap();
+        let norm = (f64::from(p) + 2.0) / std::f64::consts::TAU;
+        let wo = Vec3::new(0.48, 0.36, 0.8);
+        let r = Vec3::new(-0.48, -0.36, 0.8);
+        for alpha in [0.0_f32, 1e-4, 3e-4, 1e-3, 3e-3] {
+            // Turn r by alpha about an axis perpendicular to it.
+            let axis = r.cross(Vec3::Z).normalize();
+            let wi = (r * alpha.cos() + axis.cross(r) * alpha.sin()).normalize();
+            // The f64 reference from the actual f32 directions.
+            let angle = angle_f64(Vec3::new(-wo.x, -wo.y, wo.z), wi);
+            let expect = norm * angle.cos().powf(f64::from(p));
+            let got = f64::from(m.eval(wo, wi));
+            assert!(
+                (got - expect).abs() <= 1e-4 * expect + 1e-30,
+                "p = {p}, α = {alpha}: {got} vs {expect}"
+            );
+        }
+    }
+}
+
+/// The angle between two directions, in f64 (as the atan2 of the cross and dot products of
+/// the normalised f64 vectors, which is accurate at small angles).
+fn angle_f64(a: Vec3, b: Vec3) -> f64 {
+    let n = |v: Vec3| {
+        let v = [f64::from(v.x), f64::from(v.y), f64::from(v.z)];
+        let l = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+        [v[0] / l, v[1] / l, v[2] / l]
+    };
+    let (a, b) = (n(a), n(b));
+    let cross = [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ];
+    let sin = (cross[0] * cross[0] + cross[1] * cross[1] + cross[2] * cross[2]).sqrt();
+    sin.atan2(a[0] * b[0] + a[1] * b[1] + a[2] * b[2])
+}
+
+#[test]
+fn exact_and_grazing_configurations_are_finite() {
+    let grazing = Vec3::new((1.0_f32 - 1e-14).sqrt(), 0.0, 1e-7);
+    let mirror = Vec3::new(-grazing.x, -grazing.y, grazing.z);
+    for p in [0.0_f32, 1.0, 100.0, 1e6] {
+        for (kd, ks) in [(0.0_f32, 1.0_f32), (0.5, 0.5), (0.0, 0.0)] {
+            let m = Phong::new(kd, ks, p).unwrap();
+            let peak = kd / core::f32::consts::PI + ks * (p + 2.0) / core::f32::consts::TAU;
+            // The exact mirror configuration at normal incidence and at grazing.
+            for (wo, wi) in [(Vec3::Z, Vec3::Z), (grazing, mirror)] {
+                let f = m.eval(wo, wi);
+                assert!((f - peak).abs() <= 1e-6 * peak, "p = {p}: {f} vs {peak}");
+                assert!(m.pdf(wo, wi).is_finite());
+            }
+            for (wo, wi) in [(grazing, grazing), (grazing, -mirror), (Vec3::Z, grazing)] {
+                let (f, pdf) = (m.eval(wo, wi), m.pdf(wo, wi));
+                assert!(f.is_finite() && f >= 0.0 && pdf.is_finite() && pdf >= 0.0);
+            }
+            let edges = [0.0_f32, 1e-7, 0.5, 1.0 - 6e-8];
+            for wo in [Vec3::Z, grazing] {
+                for &x in &edges {
+                    for &y in &edges {
+                        for uc in [0.0_f32, 0.4, 1.0 - 6e-8] {
+                            if let Some(s) = m.sample(wo, Vec2::new(x, y), uc) {
+                                assert!(s.wi.z > 0.0 && s.wi.is_finite());
+                                assert!(s.f.is_finite() && s.f >= 0.0);
+                                assert!(s.pdf.is_finite() && s.pdf > 0.0);
+                                assert!(s.weight().is_finite());
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn spectral_weights_act_per_channel() {
+    let kd = Vec3::new(0.1, 0.4, 0.0);
+    let ks = Vec3::new(0.9, 0.2, 0.0);
+    let m = Phong::new(kd, ks, 20.0).unwrap();
+    let (wo, wi) = (
+        Vec3::new(0.3, -0.2, 0.9).normalize(),
+        Vec3::new(-0.25, 0.3, 0.85).normalize(),
+    );
+    let f = m.eval(wo, wi);
+    for c in 0..3 {
+        let mono = Phong::new(kd[c], ks[c], 20.0).unwrap();
+        assert!((f[c] - mono.eval(wo, wi)).abs() <= 1e-6 * f[c].max(1e-30));
+    }
+    assert_eq!(m.albedo_upper_bound(), kd + ks);
+    // The lobe choice uses the channel averages: P_d = 0.5/1.6.
+    let pd = 0.5_f32 / 1.6;
+    let r = Vec3::new(-wo.x, -wo.y, wo.z);
+    let lobe = f64::from(r.dot(wi)).powi(20) as f32;
+    let expect =
+        pd * wi.z / core::f32::consts::PI + (1.0 - pd) * 21.0 / core::f32::consts::TAU * lobe;
+    assert!((m.pdf(wo, wi) - expect).abs() <= 1e-5 * expect);
+}
+
+#[test]
+fn lobes_are_those_with_weight() {
+    let lobes = |kd: f32, ks: f32| Phong::new(kd, ks, 10.0).unwrap().lobes();
+    assert_eq!(
+        lobes(0.5, 0.5),
+        Lobes::DIFFUSE_REFLECTION | Lobes::GLOSSY_REFLECTION
+    );
+    assert_eq!(lobes(0.5, 0.0), Lobes::DIFFUSE_REFLECTION);
+    assert_eq!(lobes(0.0, 0.5), Lobes::GLOSSY_REFLECTION);
+    // A black model samples (and reports) its diffuse lobe, with f = 0.
+    assert_eq!(lobes(0.0, 0.0), Lobes::DIFFUSE_REFLECTION);
+    let black = Phong::new(0.0_f32, 0.0, 10.0).unwrap();
+    let s = black.sample(Vec3::Z, Vec2::new(0.3, 0.6), 0.99).unwrap();
+    assert_eq!((s.f, s.lobe), (0.0, Lobes::DIFFUSE_REFLECTION));
+    // The choice follows uc: below P_d = 0.25 diffuse, above glossy.
+    let m = Phong::new(0.2_f32, 0.6, 10.0).unwrap();
+    let u = Vec2::new(0.3, 0.6);
+    assert_eq!(
+        m.sample(Vec3::Z, u, 0.2).unwrap().lobe,
+        Lobes::DIFFUSE_REFLECTION
+    );
+    assert_eq!(
+        m.sample(Vec3::Z, u, 0.3).unwrap().lobe,
+        Lobes::GLOSSY_REFLECTION
+    );
+}
+
+#[test]
+fn refuses_bad_parameters() {
+    for bad in [f32::NAN, -0.1, 1.5, f32::INFINITY] {
+        assert_eq!(Phong::new(bad, 0.0, 1.0).unwrap_err().param(), "kd");
+        assert_eq!(Phong::new(0.0, bad, 1.0).unwrap_err().param(), "ks");
+    }
+    let e = Phong::new(0.6_f32, 0.5, 1.0).unwrap_err();
+    assert_eq!((e.param(), e.range()), ("kd + ks", "[0, 1]"));
+    let e = Phong::new(Vec3::new(0.5, 0.9, 0.1), Vec3::new(0.5, 0.2, 0.1), 1.0).unwrap_err();
+    assert_eq!(e.param(), "kd + ks");
+    assert!((e.value() - 1.1).abs() < 1e-6);
+    for bad in [f32::NAN, -1.0, 1.1e6, f32::INFINITY] {
+        let e = Phong::new(0.5_f32, 0.5, bad).unwrap_err();
+        assert_eq!((e.param(), e.range()), ("exponent", "[0, 1000000]"));
+    }
+    // The ends of the ranges are accepted.
+    assert!(Phong::new(0.0_f32, 0.0, 0.0).is_ok());
+    assert!(Phong::new(0.3_f32, 0.7, Phong::<f32>::MAX_EXPONENT).is_ok());
+    assert!(Phong::new(1.0_f32, 0.0, 1.0).is_ok() && Phong::new(0.0_f32, 1.0, 1.0).is_ok());
+    let m = Phong::new(0.25_f32, 0.5, 7.0).unwrap();
+    assert_eq!((m.kd(), m.ks(), m.exponent()), (0.25, 0.5, 7.0));
+}
