@@ -133,7 +133,7 @@ pub fn sample_consistency<B: Bxdf<Spectrum = f32> + ?Sized>(
 /// One reciprocity measurement: the two sides of the (generalised) reciprocity relation for
 /// a pair of directions, and how far apart f32 round-off alone can put them.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Reciprocity {
+pub struct ReciprocityPair {
     /// `f(wo, wi) / η_o²`.
     pub forward: f64,
     /// `f(wi, wo) / η_i²`.
@@ -145,7 +145,7 @@ pub struct Reciprocity {
     pub round_off: f64,
 }
 
-impl Reciprocity {
+impl ReciprocityPair {
     /// `|forward − backward| / max(|forward|, |backward|)`, zero when both are zero.
     #[must_use]
     pub fn relative_error(&self) -> f64 {
@@ -177,12 +177,12 @@ pub const SUBNORMAL_FLOOR: f64 = 1e-30;
 /// reciprocity; across an interface it is the generalised form for radiance transport (Veach
 /// 1997, eq. 5.12). For a model in importance mode pass `1/η`.
 #[must_use]
-pub fn reciprocity<B: Bxdf<Spectrum = f32> + ?Sized>(
+pub fn reciprocity_pair<B: Bxdf<Spectrum = f32> + ?Sized>(
     bxdf: &B,
     wo: Vec3,
     wi: Vec3,
     eta: f32,
-) -> Reciprocity {
+) -> ReciprocityPair {
     let side = |w: Vec3| if w.z >= 0.0 { 1.0 } else { f64::from(eta) };
     let forward = |a: Vec3, b: Vec3| f64::from(bxdf.eval(a, b)) / (side(a) * side(a));
     let (a, b) = (forward(wo, wi), forward(wi, wo));
@@ -196,7 +196,7 @@ pub fn reciprocity<B: Bxdf<Spectrum = f32> + ?Sized>(
             .max((forward(wi, po) - b).abs())
             .max((forward(pi, wo) - b).abs());
     }
-    Reciprocity {
+    ReciprocityPair {
         forward: a,
         backward: b,
         round_off: 2.0 * spread + SUBNORMAL_FLOOR,

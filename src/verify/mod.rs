@@ -60,16 +60,22 @@
 //! ```
 
 mod bxdf;
+mod check;
 mod chi2;
 mod estimate;
 mod gamma;
 mod ndf;
+mod report;
 mod rng;
 mod significance;
 
 pub use bxdf::{
-    BxdfCheck, Reciprocity, SUBNORMAL_FLOOR, albedo_cosine, albedo_sampled, chi2_bxdf, reciprocity,
-    sample_consistency,
+    BxdfCheck, ReciprocityPair, SUBNORMAL_FLOOR, albedo_cosine, albedo_sampled, chi2_bxdf,
+    reciprocity_pair, sample_consistency,
+};
+pub use check::{
+    Albedo, Config, albedo, check_bxdf, consistency, energy_bound, positivity, reciprocity,
+    sampling_chi2, two_sided_quantile,
 };
 pub use chi2::{Chi2Bin, Chi2Config, Chi2Report, Chi2Residual, chi2_sphere, chi2_sphere_rng};
 pub use estimate::{Accumulator, Estimate};
@@ -78,5 +84,6 @@ pub use ndf::{
     NdfCheck, chi2_normals, d_normalization, projected_area, projected_area_masked,
     visible_normalization,
 };
+pub use report::{Law, LawReport, Report};
 pub use rng::Pcg32;
 pub use significance::sidak;
