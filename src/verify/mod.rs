@@ -31,6 +31,43 @@
 //! what the significance means, and why suites correct it with [`sidak`] rather than
 //! retrying with other seeds.
 //!
+//! ## Verifying your own BRDF
+//!
+//! A renderer's own model implements [`Bxdf`](crate::bxdf::Bxdf); then three lines in its tests
+//! run every law that applies and say, on failure, which law failed and where:
+//!
+//! ```
+//! use lobe::bxdf::{Bxdf, BxdfSample, Lobes};
+//! use lobe::sampling::{cosine_hemisphere, cosine_hemisphere_pdf};
+//! use lobe::{Vec2, Vec3};
+//!
+//! /// A renderer's own diffuse BRDF, 90% reflectance.
+//! struct MyDiffuse;
+//!
+//! impl Bxdf for MyDiffuse {
+//!     type Spectrum = f32;
+//!     fn eval(&self, wo: Vec3, wi: Vec3) -> f32 {
+//!         if wo.z > 0.0 && wi.z > 0.0 { 0.9 / std::f32::consts::PI } else { 0.0 }
+//!     }
+//!     fn sample(&self, wo: Vec3, u: Vec2, _uc: f32) -> Option<BxdfSample<f32>> {
+//!         let wi = cosine_hemisphere(u);
+//!         let pdf = self.pdf(wo, wi);
+//!         (pdf > 0.0).then(|| BxdfSample { wi, f: self.eval(wo, wi), pdf, lobe: Lobes::DIFFUSE_REFLECTION, eta: 1.0 })
+//!     }
+//!     fn pdf(&self, wo: Vec3, wi: Vec3) -> f32 {
+//!         if wo.z > 0.0 && wi.z > 0.0 { cosine_hemisphere_pdf(wi.z) } else { 0.0 }
+//!     }
+//!     fn lobes(&self) -> Lobes {
+//!         Lobes::DIFFUSE_REFLECTION
+//!     }
+//! }
+//!
+//! // The test: (a smaller budget than the default, to keep this example quick)
+//! let config = lobe::verify::Config { albedo_samples: 20_000, chi2_samples: 50_000, pairs: 2_000, ..Default::default() };
+//! let report = lobe::verify::check_bxdf("my diffuse", &MyDiffuse, &config);
+//! assert!(report.passed(), "{report}");
+//! ```
+//!
 //! ## Example
 //!
 //! Check that cosine-weighted hemisphere sampling produces the density it claims:
@@ -81,8 +118,8 @@ pub use chi2::{Chi2Bin, Chi2Config, Chi2Report, Chi2Residual, chi2_sphere, chi2_
 pub use estimate::{Accumulator, Estimate};
 pub use gamma::{chi2_survival, gamma_p, gamma_q, ln_gamma};
 pub use ndf::{
-    NdfCheck, chi2_normals, d_normalization, projected_area, projected_area_masked,
-    visible_normalization,
+    NdfCheck, NdfConfig, check_ndf, chi2_normals, d_normalization, projected_area,
+    projected_area_masked, visible_normalization,
 };
 pub use report::{Law, LawReport, Report};
 pub use rng::Pcg32;

@@ -181,3 +181,151 @@ pub fn chi2_normals(
         config,
     )
 }
+
+/// Settings of [`check_ndf`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct NdfConfig {
+    /// The integral checks' budget and proposal (set its `stretch` to the widths).
+    pub check: NdfCheck,
+    /// Viewer angles, in degrees, of the projected-area, visible-normal and sampling checks.
+    /// Default `{0, 30, 60, 85, 89}`.
+    pub thetas: std::vec::Vec<f32>,
+    /// Samples per chi-square test. Default 200 000.
+    pub chi2_samples: usize,
+    /// The chance of failing a correct distribution, for the whole run. Default 0.01.
+    pub significance: f64,
+}
+
+impl Default for NdfConfig {
+    fn default() -> Self {
+        Self {
+            check: NdfCheck::default(),
+            thetas: std::vec![0.0, 30.0, 60.0, 85.0, 89.0],
+            chi2_samples: 200_000,
+            significance: 0.01,
+        }
+    }
+}
+
+/// Runs the laws of a microfacet distribution as reports: `D` normalisation, projected area
+/// (the figure is the largest `|∫ … / cos θo − 1|` over the angles), visible normalisation
+/// (largest `|∫ D_w − 1|`) and the chi-square test of [`NormalDistribution::sample`] against
+/// [`NormalDistribution::pdf`], each Šidák-corrected over its angles.
+///
+/// ```
+/// use lobe::microfacet::Ggx;
+/// use lobe::verify::{check_ndf, NdfCheck, NdfConfig};
+/// use lobe::Alpha;
+/// let config = NdfConfig {
+///     check: NdfCheck { samples: 50_000, ..NdfCheck::stretched(0.3, 0.3) },
+///     chi2_samples: 50_000,
+///     ..NdfConfig::default()
+/// };
+/// let report = check_ndf("GGX", &Ggx::isotropic(Alpha::new(0.3)?), &config);
+/// assert!(report.passed(), "{report}");
+/// # Ok::<(), lobe::ParamError>(())
+/// ```
+#[must_use]
+pub fn check_ndf<D: NormalDistribution + ?Sized>(
+    name: &str,
+    dist: &D,
+    config: &NdfConfig,
+) -> super::Report {
+    use super::{Law, LawReport, sidak, two_sided_quantile};
+    use std::format;
+    let n = config.thetas.len().max(1);
+    let k1 = two_sided_quantile(config.significance / 4.0);
+    let k = two_sided_quantile(sidak(config.significance / 4.0, n));
+    let dirs: std::vec::Vec<(f32, Vec3)> = config
+        .thetas
+        .iter()
+        .map(|&t| {
+            let (s, c) = t.to_radians().sin_cos();
+            (t, Vec3::new(s * 0.7f32.cos(), s * 0.7f32.sin(), c))
+        })
+        .collect();
+    let budget = format!("{} samples", config.check.samples);
+
+    let e = d_normalization(dist, &config.check);
+    let norm = LawReport {
+        law: Law::DNormalization,
+        passed: e.within(1.0, k1),
+        figure: e.mean,
+        uncertainty: e.std_err,
+        figure_name: "∫ D cos θ",
+        budget: budget.clone(),
+        detail: format!("want 1 within {k1:.2}σ"),
+    };
+
+    // The largest relative deviation of an integral from its target over the angles.
+    let worst = |f: &dyn Fn(Vec3) -> (Estimate, f64)| {
+        let mut out = (0.0_f64, 0.0_f64, 0.0_f32, true);
+        for &(t, w) in &dirs {
+            let (e, target) = f(w);
+            let dev = (e.mean / target - 1.0).abs();
+            let ok = e.within(target, k);
+            if dev > out.0 {
+                out = (dev, e.std_err / target, t, out.3);
+            }
+            out.3 &= ok;
+        }
+        out
+    };
+    let (dev, sd, at, ok) = worst(&|w| (projected_area(dist, w, &config.check), f64::from(w.z)));
+    let area = LawReport {
+        law: Law::ProjectedArea,
+        passed: ok,
+        figure: dev,
+        uncertainty: sd,
+        figure_name: "max |∫ G1 ⟨wo,m⟩ D / cos θo − 1|",
+        budget: format!("{budget} × {n} angles"),
+        detail: format!("largest at θo = {at}°, k = {k:.2}"),
+    };
+    let (dev, sd, at, ok) = worst(&|w| (visible_normalization(dist, w, &config.check), 1.0));
+    let visible = LawReport {
+        law: Law::VisibleNormalization,
+        passed: ok,
+        figure: dev,
+        uncertainty: sd,
+        figure_name: "max |∫ D_w − 1|",
+        budget: format!("{budget} × {n} angles"),
+        detail: format!("largest at θ = {at}°"),
+    };
+
+    let significance = sidak(config.significance / 4.0, n);
+    let mut min_p = (1.0_f64, 0.0_f32);
+    let mut failure = None;
+    for (i, &(t, w)) in dirs.iter().enumerate() {
+        let chi = Chi2Config {
+            samples: config.chi2_samples,
+            seed: config.check.seed.wrapping_add(i as u64),
+            significance,
+            ..Chi2Config::default()
+        };
+        let r = chi2_normals(
+            |u| dist.sample(w, u),
+            |m| f64::from(dist.pdf(w, m)),
+            config.check.stretch,
+            &chi,
+        );
+        if r.p_value < min_p.0 {
+            min_p = (r.p_value, t);
+        }
+        if !r.passed() && failure.is_none() {
+            failure = Some(format!("at θ = {t}°: p = {:.2e}", r.p_value));
+        }
+    }
+    let sampling = LawReport {
+        law: Law::Sampling,
+        passed: failure.is_none(),
+        figure: min_p.0,
+        uncertainty: 0.0,
+        figure_name: "min p-value",
+        budget: format!("{} samples × {n} angles", config.chi2_samples),
+        detail: failure.unwrap_or_else(|| format!("smallest at θ = {}°", min_p.1)),
+    };
+    super::Report {
+        name: name.into(),
+        laws: std::vec![norm, area, visible, sampling],
+    }
+}

@@ -81,12 +81,17 @@ impl LawReport {
     /// The figure with its uncertainty, compactly, as the conformance matrix shows it.
     #[must_use]
     pub fn cell(&self) -> String {
+        let value = |x: f64| {
+            if x == 0.0 || (1e-3..1e4).contains(&x.abs()) {
+                format!("{x:.4}")
+            } else {
+                format!("{x:.1e}")
+            }
+        };
         if self.uncertainty > 0.0 {
-            format!("{:.4} ± {:.1e}", self.figure, self.uncertainty)
-        } else if self.figure == 0.0 || (1e-3..1e4).contains(&self.figure.abs()) {
-            format!("{:.4}", self.figure)
+            format!("{} ± {:.1e}", value(self.figure), self.uncertainty)
         } else {
-            format!("{:.1e}", self.figure)
+            value(self.figure)
         }
     }
 }
