@@ -1,6 +1,6 @@
 //! The handouts' glazed material: a diffuse base under a smooth dielectric coat.
 
-use super::{Bxdf, BxdfSample, Lobes, both_above};
+use super::{Bxdf, BxdfSample, Lobes, both_above, delta_scale};
 use crate::fresnel::dielectric;
 use crate::param::{Eta, ParamError, unit_interval};
 use crate::sampling::{cosine_hemisphere, cosine_hemisphere_pdf};
@@ -111,7 +111,7 @@ impl<S: Spectrum> Bxdf for Glazed<S> {
             let wi = Vec3::new(-wo.x, -wo.y, wo.z);
             return Some(BxdfSample {
                 wi,
-                f: S::splat(f / wi.z),
+                f: S::splat(f * delta_scale(wi)?),
                 pdf: p_mirror,
                 lobe: Lobes::SPECULAR_REFLECTION,
                 eta: 1.0,

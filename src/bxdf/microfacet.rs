@@ -81,11 +81,14 @@ impl<D: NormalDistribution, F: Fresnel> Microfacet<D, F> {
     #[inline]
     fn value(&self, wo: Vec3, wi: Vec3, h: Vec3) -> F::Spectrum {
         let d = self.distribution.d(h);
-        if d == 0.0 {
+        // A product of cosines that underflows (subnormal cos θ) would divide 0 by 0: the
+        // light there is grazing to within 1e-38 and contributes nothing.
+        let cos2 = wo.z * wi.z;
+        if d == 0.0 || !(cos2 > 0.0) {
             return F::Spectrum::zero();
         }
         let g = self.masking.g2(&self.distribution, wo, wi, h);
-        self.fresnel.eval(wo.dot(h)) * (d * g / (4.0 * wo.z * wi.z))
+        self.fresnel.eval(wo.dot(h)) * (d * g / (4.0 * cos2))
     }
 
     /// The density of `wi` reflected about the sampled normal `h`: `pdf(m) / (4 wo·h)`.

@@ -1,6 +1,6 @@
 //! A perfect mirror: delta reflection, weighted by a Fresnel term.
 
-use super::{Bxdf, BxdfSample, Lobes};
+use super::{Bxdf, BxdfSample, Lobes, delta_scale};
 use crate::fresnel::Fresnel;
 use crate::spectrum::Spectrum;
 use glam::{Vec2, Vec3};
@@ -50,7 +50,7 @@ impl<F: Fresnel> Bxdf for Mirror<F> {
         let wi = Vec3::new(-wo.x, -wo.y, wo.z);
         Some(BxdfSample {
             wi,
-            f: self.fresnel.eval(wo.z) * (1.0 / wi.z),
+            f: self.fresnel.eval(wo.z) * delta_scale(wi)?,
             pdf: 1.0,
             lobe: Lobes::SPECULAR_REFLECTION,
             eta: 1.0,

@@ -237,6 +237,15 @@ pub trait Bxdf {
     fn lobes(&self) -> Lobes;
 }
 
+/// `1/|cos θi|` for a delta lobe's value, or `None` when `|cos θi|` is subnormal (or zero),
+/// where the value `F/|cos θi|` would overflow `f32`: such a sample is refused rather than
+/// returned with an infinite value.
+#[inline]
+pub(crate) fn delta_scale(wi: Vec3) -> Option<f32> {
+    let c = wi.z.abs();
+    (c >= f32::MIN_POSITIVE).then(|| 1.0 / c)
+}
+
 /// `wo` and `wi` both strictly above the surface: the support of a one-sided BRDF.
 #[inline]
 #[must_use]

@@ -89,7 +89,9 @@ impl<D: NormalDistribution> RoughDielectric<D> {
     /// microfacet can.
     #[inline]
     fn configuration(&self, wo: Vec3, wi: Vec3) -> Option<Configuration> {
-        if wo.z == 0.0 || wi.z == 0.0 {
+        // Also refuses a pair whose product of cosines underflows (subnormal cos θ), where
+        // the value would be 0/0.
+        if (wo.z * wi.z).abs() < f32::MIN_POSITIVE {
             return None;
         }
         let reflection = wo.z * wi.z > 0.0;

@@ -1,6 +1,6 @@
 //! A smooth dielectric interface: delta reflection and refraction with the exact Fresnel term.
 
-use super::{Bxdf, BxdfSample, Lobes, TransportMode};
+use super::{Bxdf, BxdfSample, Lobes, TransportMode, delta_scale};
 use crate::frame::refract;
 use crate::fresnel::dielectric;
 use crate::param::Eta;
@@ -64,7 +64,7 @@ impl Bxdf for SmoothDielectric {
             let wi = Vec3::new(-wo.x, -wo.y, wo.z);
             return Some(BxdfSample {
                 wi,
-                f: r / wi.z.abs(),
+                f: r * delta_scale(wi)?,
                 pdf: r,
                 lobe: Lobes::SPECULAR_REFLECTION,
                 eta: 1.0,
@@ -86,7 +86,7 @@ impl Bxdf for SmoothDielectric {
         };
         Some(BxdfSample {
             wi,
-            f: t * scale / wi.z.abs(),
+            f: t * scale * delta_scale(wi)?,
             pdf: t,
             lobe: Lobes::SPECULAR_TRANSMISSION,
             eta: etap,

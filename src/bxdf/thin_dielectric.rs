@@ -1,6 +1,6 @@
 //! A thin dielectric sheet (a window pane): delta reflection and straight-through transmission.
 
-use super::{Bxdf, BxdfSample, Lobes};
+use super::{Bxdf, BxdfSample, Lobes, delta_scale};
 use crate::fresnel::dielectric;
 use crate::param::Eta;
 use glam::{Vec2, Vec3};
@@ -67,7 +67,7 @@ impl Bxdf for ThinDielectric {
         }
         Some(BxdfSample {
             wi,
-            f: p / wi.z.abs(),
+            f: p * delta_scale(wi)?,
             pdf: p,
             lobe,
             eta: 1.0,

@@ -102,7 +102,7 @@ pub fn chi2_bxdf<B: Bxdf + ?Sized>(bxdf: &B, wo: Vec3, config: &Chi2Config) -> C
 
 /// How far [`Bxdf::sample`]'s `f` and `pdf` are from [`Bxdf::eval`] and [`Bxdf::pdf`] at the
 /// sampled direction: the largest relative differences `(f, pdf)` over `check.samples`
-/// non-delta samples.
+/// non-delta samples; NaN if any comparison is NaN.
 #[must_use]
 pub fn sample_consistency<B: Bxdf<Spectrum = f32> + ?Sized>(
     bxdf: &B,
@@ -123,8 +123,16 @@ pub fn sample_consistency<B: Bxdf<Spectrum = f32> + ?Sized>(
         let u = rng.next_vec2();
         let uc = rng.next_f32();
         if let Some(s) = bxdf.sample(wo, u, uc).filter(|s| !s.is_specular()) {
-            worst_f = worst_f.max(rel(s.f, bxdf.eval(wo, s.wi)));
-            worst_pdf = worst_pdf.max(rel(s.pdf, bxdf.pdf(wo, s.wi)));
+            // `f64::max` drops NaN; keep it, so that a NaN can only make things worse.
+            let keep = |worst: f64, x: f64| {
+                if x.is_nan() || worst.is_nan() {
+                    f64::NAN
+                } else {
+                    worst.max(x)
+                }
+            };
+            worst_f = keep(worst_f, rel(s.f, bxdf.eval(wo, s.wi)));
+            worst_pdf = keep(worst_pdf, rel(s.pdf, bxdf.pdf(wo, s.wi)));
         }
     }
     (worst_f, worst_pdf)

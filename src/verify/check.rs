@@ -119,22 +119,34 @@ pub fn two_sided_quantile(p: f64) -> f64 {
     0.5 * (lo + hi)
 }
 
-/// A direction for the positivity check: uniform on the sphere, or (one time in four) within
-/// 1e-7…1e-2 of the horizon, where formulas divide by `cos θ`.
+/// A direction for the positivity check: uniform on the sphere (half the draws), within
+/// 1e-7…1e-2 of the horizon (a quarter), or one of the places where formulas divide by zero
+/// (a quarter): exactly on the horizon (`z = ±0`), a subnormal `z`, or exactly `±z`.
 fn adversarial_direction(rng: &mut Pcg32) -> Vec3 {
     let u = rng.next_vec2();
-    if rng.next_f32() < 0.25 {
-        let z = 10f32.powf(-7.0 + 5.0 * u.x) * if rng.next_f32() < 0.5 { 1.0 } else { -1.0 };
+    let pick = rng.next_f32();
+    let sign = if rng.next_f32() < 0.5 { 1.0 } else { -1.0 };
+    let phi = core::f32::consts::TAU * u.y;
+    let around = |z: f32| {
         let r = (1.0 - z * z).max(0.0).sqrt();
-        let phi = core::f32::consts::TAU * u.y;
         Vec3::new(r * phi.cos(), r * phi.sin(), z)
-    } else {
+    };
+    if pick < 0.5 {
         uniform_sphere(u)
+    } else if pick < 0.75 {
+        around(sign * 10f32.powf(-7.0 + 5.0 * u.x))
+    } else if pick < 0.85 {
+        around(sign * 0.0)
+    } else if pick < 0.92 {
+        around(sign * 1e-40)
+    } else {
+        Vec3::new(0.0, 0.0, sign)
     }
 }
 
 /// **Positivity** and totality: over `config.pairs` adversarial direction pairs (uniform,
-/// and grazing down to `cos θ = 1e-7`), `eval` and `pdf` are finite and non-negative, and
+/// grazing down to `cos θ = 1e-7`, exactly on the horizon, subnormal, and exactly along the
+/// normal), `eval` and `pdf` are finite and non-negative, and
 /// every sample has a unit `wi`, a finite non-negative `f` and a positive finite `pdf`.
 /// The figure is the number of violations.
 #[must_use]
@@ -207,7 +219,10 @@ pub fn reciprocity<B: Bxdf<Spectrum = f32> + ?Sized>(bxdf: &B, config: &Config) 
             failures += 1;
         }
         let scale = r.forward.abs().max(r.backward.abs());
-        if scale > 0.0 && r.round_off - SUBNORMAL_FLOOR <= tol * scale {
+        if r.forward.is_nan() || r.backward.is_nan() {
+            // Not a number: no figure can stand for it (`max` would drop it).
+            worst = f64::NAN;
+        } else if scale > 0.0 && r.round_off - SUBNORMAL_FLOOR <= tol * scale {
             worst = worst.max(r.relative_error());
         } else if scale > 0.0 {
             ill += 1;
@@ -269,18 +284,23 @@ pub fn energy_bound<B: Bxdf<Spectrum = f32> + ?Sized>(
         let a = albedo(bxdf, wo, config);
         let s = a.sampled;
         let allowance = k * s.std_err + F32_ROUND_OFF * config.albedo_bound;
+        // Written so that a NaN estimate fails.
         bound_ok &= s.mean <= config.albedo_bound + allowance;
-        if largest.is_none_or(|(l, _)| s.mean > l.mean) {
+        if s.mean.is_nan() {
+            largest = Some((s, wo));
+        }
+        if largest.is_none_or(|(l, _)| s.mean > l.mean && !l.mean.is_nan()) {
             largest = Some((s, wo));
         }
         if let Some(c) = a.cosine {
             agreement_checked = true;
             let sigma = (s.std_err.powi(2) + c.std_err.powi(2)).sqrt();
             let diff = (s.mean - c.mean).abs();
-            if diff > k * sigma + F32_ROUND_OFF * s.mean.abs() && agreement_failure.is_none() {
+            let agrees = diff <= k * sigma + F32_ROUND_OFF * s.mean.abs();
+            if !agrees && agreement_failure.is_none() {
                 agreement_failure = Some(format!("at wo = {wo:?}: sampled {s}, cosine {c}"));
             }
-            if diff > worst_gap.0 {
+            if diff > worst_gap.0 || diff.is_nan() {
                 worst_gap = (diff, sigma, wo);
             }
         }
@@ -343,7 +363,16 @@ pub fn sampling_chi2<B: Bxdf + ?Sized>(bxdf: &B, config: &Config) -> LawReport {
             min_p = (r.p_value, wo);
         }
         if !r.passed() && failure.is_none() {
-            failure = Some(format!("at wo = {wo:?}: {}", first_line(&format!("{r}"))));
+            failure = Some(format!(
+                "at wo = {wo:?}: p = {:.3e}, {} samples in zero-density bins, {} invalid samples, \
+                 {} invalid pdf values, {} samples rejected (expected {:.1})",
+                r.p_value,
+                r.zero_bin_hits,
+                r.invalid_samples,
+                r.invalid_pdf_values,
+                r.rejected_samples,
+                r.expected_rejected
+            ));
         }
     }
     LawReport {
@@ -361,10 +390,6 @@ pub fn sampling_chi2<B: Bxdf + ?Sized>(bxdf: &B, config: &Config) -> LawReport {
     }
 }
 
-fn first_line(s: &str) -> String {
-    s.lines().next().unwrap_or_default().into()
-}
-
 /// **Consistency**: `sample`'s `f` and `pdf` equal `eval` and `pdf` at the sampled direction
 /// within `config.consistency_tolerance` (relative). The figure is the largest relative
 /// difference.
@@ -374,13 +399,19 @@ pub fn consistency<B: Bxdf<Spectrum = f32> + ?Sized>(bxdf: &B, config: &Config) 
     let mut worst = (0.0_f64, Vec3::Z);
     for wo in config.viewer_directions(bxdf) {
         let (f, p) = sample_consistency(bxdf, wo, &check);
-        if f.max(p) > worst.0 {
-            worst = (f.max(p), wo);
+        // `f64::max` would drop a NaN: keep it, so that it fails.
+        let gap = if f.is_nan() || p.is_nan() {
+            f64::NAN
+        } else {
+            f.max(p)
+        };
+        if gap > worst.0 || gap.is_nan() {
+            worst = (gap, wo);
         }
     }
     LawReport {
         law: Law::Consistency,
-        passed: worst.0 <= config.consistency_tolerance,
+        passed: worst.0 <= config.consistency_tolerance, // false for NaN
         figure: worst.0,
         uncertainty: 0.0,
         figure_name: "max relative difference",

@@ -105,6 +105,8 @@ mod ndf;
 mod report;
 mod rng;
 mod significance;
+#[cfg(feature = "proptest")]
+pub mod strategies;
 
 pub use bxdf::{
     BxdfCheck, ReciprocityPair, SUBNORMAL_FLOOR, albedo_cosine, albedo_sampled, chi2_bxdf,
