@@ -1,0 +1,249 @@
+//! Lights: point, directional, spherical and quadrilateral area lights, and the environment.
+
+use crate::environment::Environment;
+use crate::quad::Quad;
+use crate::ray::{Ray, offset_origin, shadow_ray};
+use lobe::sampling::{uniform_cone, uniform_cone_pdf};
+use lobe::{Frame, Vec2, Vec3};
+
+/// A light source (seed 003: point, directional, area and environment sources).
+#[derive(Clone, Copy, Debug)]
+pub enum Light {
+    /// An isotropic point source of intensity `I`: irradiance `I cos θ / r²` (seed 003,
+    /// "Irradiance from isotropic point source").
+    Point {
+        /// The position.
+        position: Vec3,
+        /// The radiant intensity (W/sr per channel).
+        intensity: Vec3,
+    },
+    /// A source infinitely far away (the sun): parallel light of irradiance `E` on a
+    /// surface facing it.
+    Directional {
+        /// The unit direction toward the light.
+        to_light: Vec3,
+        /// The irradiance on a surface facing the light.
+        irradiance: Vec3,
+    },
+    /// A sphere emitting `radiance` outward from its surface, sampled by solid angle.
+    Sphere {
+        /// The centre.
+        center: Vec3,
+        /// The radius.
+        radius: f32,
+        /// The emitted radiance.
+        radiance: Vec3,
+    },
+    /// A parallelogram emitting `radiance` from its front (`u × v`) side, sampled by area.
+    Quad {
+        /// The geometry.
+        quad: Quad,
+        /// The emitted radiance.
+        radiance: Vec3,
+    },
+    /// Light from infinitely far away in every direction.
+    Environment(Environment),
+}
+
+/// A direction toward a light, drawn for next-event estimation.
+#[derive(Clone, Copy, Debug)]
+pub struct LightSample {
+    /// The unit direction from the shaded point toward the light.
+    pub wi: Vec3,
+    /// The radiance arriving along `wi` (for a delta light, the incident "radiance" that
+    /// makes `f Li |cos| / pdf` the right contribution with `pdf = 1`).
+    pub li: Vec3,
+    /// The solid-angle density of `wi`; `1` for a delta light.
+    pub pdf: f32,
+    /// True for a light no BSDF sample can hit (point, directional): no MIS.
+    pub delta: bool,
+    /// The shadow ray that must be unoccluded.
+    pub shadow: Ray,
+}
+
+impl Light {
+    /// Draws a direction toward the light from the point `p` with geometric normal `ng`,
+    /// with `u` uniform in `[0, 1)²`; `None` when the light cannot reach `p` this time.
+    pub fn sample(&self, p: Vec3, ng: Vec3, u: Vec2) -> Option<LightSample> {
+        match *self {
+            Self::Point {
+                position,
+                intensity,
+            } => {
+                let shadow = shadow_ray(p, ng, position, None)?;
+                let d2 = (position - p).length_squared();
+                Some(LightSample {
+                    wi: shadow.dir,
+                    li: intensity / d2,
+                    pdf: 1.0,
+                    delta: true,
+                    shadow,
+                })
+            }
+            Self::Directional {
+                to_light,
+                irradiance,
+            } => Some(LightSample {
+                wi: to_light,
+                li: irradiance,
+                pdf: 1.0,
+                delta: true,
+                shadow: Ray::new(offset_origin(p, ng, to_light), to_light),
+            }),
+            Self::Sphere {
+                center,
+                radius,
+                radiance,
+            } => {
+                let to_center = center - p;
+                let d2 = to_center.length_squared();
+                let r2 = radius * radius;
+                if d2 <= r2 * 1.0001 {
+                    return None; // inside (or on) the light: it does not light itself
+                }
+                let d = d2.sqrt();
+                let axis = to_center / d;
+                let cos_max = (1.0 - r2 / d2).max(0.0).sqrt();
+                let wi = Frame::from_normal(axis).to_world(uniform_cone(u, cos_max));
+                // The nearer point where `wi` meets the sphere; at the rim, where rounding
+                // can make the ray miss, the point of closest approach.
+                let b = to_center.dot(wi);
+                let disc = r2 - (to_center - b * wi).length_squared();
+                let q = p + wi * (b - disc.max(0.0).sqrt());
+                let shadow = shadow_ray(p, ng, q, Some((q - center) / radius))?;
+                Some(LightSample {
+                    wi,
+                    li: radiance,
+                    pdf: uniform_cone_pdf(cos_max),
+                    delta: false,
+                    shadow,
+                })
+            }
+            Self::Quad { quad, radiance } => {
+                let q = quad.point(u.x, u.y);
+                let to = q - p;
+                let d2 = to.length_squared();
+                let wi = to / d2.sqrt();
+                let cos_l = -wi.dot(quad.normal);
+                if !(cos_l > 0.0) {
+                    return None; // the back of the light, or grazing
+                }
+                let shadow = shadow_ray(p, ng, q, Some(quad.normal))?;
+                Some(LightSample {
+                    wi,
+                    li: radiance,
+                    pdf: d2 / (cos_l * quad.area()),
+                    delta: false,
+                    shadow,
+                })
+            }
+            Self::Environment(env) => {
+                let (wi, pdf) = env.sample(u);
+                Some(LightSample {
+                    wi,
+                    li: env.radiance(wi),
+                    pdf,
+                    delta: false,
+                    shadow: Ray::new(offset_origin(p, ng, wi), wi),
+                })
+            }
+        }
+    }
+
+    /// The radiance the light emits from its surface point `q` (normal `n`) toward `w`
+    /// (unit, pointing away from the light); zero for lights without a surface.
+    pub fn emitted(&self, n: Vec3, w: Vec3) -> Vec3 {
+        match *self {
+            Self::Sphere { radiance, .. } => radiance,
+            Self::Quad { radiance, .. } if w.dot(n) > 0.0 => radiance,
+            _ => Vec3::ZERO,
+        }
+    }
+
+    /// The solid-angle density with which [`sample`](Self::sample) from `p` draws the
+    /// direction that reaches the light's surface point `q` (normal `n`): for MIS when a
+    /// BSDF sample hits the light.
+    pub fn pdf_hit(&self, p: Vec3, q: Vec3, n: Vec3) -> f32 {
+        match *self {
+            Self::Sphere { center, radius, .. } => {
+                let d2 = (center - p).length_squared();
+                let r2 = radius * radius;
+                if d2 <= r2 * 1.0001 {
+                    return 0.0;
+                }
+                uniform_cone_pdf((1.0 - r2 / d2).max(0.0).sqrt())
+            }
+            Self::Quad { quad, .. } => {
+                let to = q - p;
+                let d2 = to.length_squared();
+                let cos_l = (to.dot(n) / d2.sqrt()).abs();
+                if cos_l > 0.0 {
+                    d2 / (cos_l * quad.area())
+                } else {
+                    0.0
+                }
+            }
+            _ => 0.0,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::surface::Surface;
+
+    #[test]
+    fn point_light_falls_off_with_the_square_of_distance() {
+        let light = Light::Point {
+            position: Vec3::new(0.0, 2.0, 0.0),
+            intensity: Vec3::splat(8.0),
+        };
+        let s = light.sample(Vec3::ZERO, Vec3::Y, Vec2::ZERO).unwrap();
+        assert!((s.li.x - 2.0).abs() < 1e-5 && s.delta);
+        assert!((s.wi - Vec3::Y).length() < 1e-6);
+    }
+
+    /// The solid angle of a sphere, `2π (1 − cos θmax)`, by integrating `1/pdf`.
+    #[test]
+    fn sphere_light_pdf_matches_its_samples_and_hits() {
+        let light = Light::Sphere {
+            center: Vec3::new(0.0, 3.0, 0.0),
+            radius: 1.0,
+            radiance: Vec3::ONE,
+        };
+        let sphere = crate::sphere::Sphere::new(Vec3::new(0.0, 3.0, 0.0), 1.0, 0);
+        for i in 0..64 {
+            let u = Vec2::new((i as f32 + 0.5) / 64.0, (i as f32 * 0.618).fract());
+            let s = light.sample(Vec3::ZERO, Vec3::Y, u).unwrap();
+            let hit = sphere.intersect(&Ray::new(Vec3::ZERO, s.wi));
+            let hit = hit.expect("a sampled direction reaches the sphere");
+            let pdf = light.pdf_hit(Vec3::ZERO, hit.p, hit.ng);
+            assert!((pdf - s.pdf).abs() < 1e-4 * s.pdf);
+            assert!(s.shadow.t_max < hit.t);
+        }
+    }
+
+    #[test]
+    fn quad_light_emits_from_the_front_only() {
+        let quad = Quad::new(Vec3::new(-0.5, 2.0, -0.5), Vec3::X, Vec3::Z, 0).unwrap();
+        assert!(quad.normal.y < 0.0, "faces down");
+        let light = Light::Quad {
+            quad,
+            radiance: Vec3::ONE,
+        };
+        let s = light.sample(Vec3::ZERO, Vec3::Y, Vec2::splat(0.5)).unwrap();
+        // Straight below the centre: pdf = d² / (cos · A) = 4.
+        assert!((s.pdf - 4.0).abs() < 1e-4);
+        assert!(
+            (light.pdf_hit(Vec3::ZERO, Vec3::new(0.0, 2.0, 0.0), quad.normal) - 4.0).abs() < 1e-4
+        );
+        assert_eq!(light.emitted(quad.normal, -Vec3::Y), Vec3::ONE);
+        assert_eq!(light.emitted(quad.normal, Vec3::Y), Vec3::ZERO);
+        assert!(
+            light
+                .sample(Vec3::new(0.0, 3.0, 0.0), Vec3::Y, Vec2::splat(0.5))
+                .is_none()
+        );
+    }
+}

@@ -1,0 +1,168 @@
+//! The path tracer: an unbiased estimate of the rendering equation with next-event
+//! estimation, multiple importance sampling and Russian roulette.
+
+use crate::heckbert::{DIFFUSE, PathFilter, SPECULAR};
+use crate::ray::{Ray, offset_origin};
+use crate::scene::Scene;
+use crate::shading::ShadingPoint;
+use lobe::Vec3;
+use lobe::sampling::power_heuristic;
+use lobe::verify::Pcg32;
+
+/// The number of bounces after which Russian roulette may end a path.
+const ROULETTE_DEPTH: u32 = 3;
+
+/// Unidirectional path tracing from the camera (Kajiya 1986; PBR 4th ed. §13.4).
+///
+/// At every vertex with a non-delta lobe, each light is sampled once (next-event
+/// estimation) and the BSDF once; both estimates of the light are combined with the power
+/// heuristic (Veach 1997, §9.2), using each model's `eval`, `sample` and `pdf`. Delta lobes
+/// (`BxdfSample::is_specular`) are reached only by sampling: no light sampling through
+/// them, and the light they find counts in full. After [`ROULETTE_DEPTH`] bounces a path
+/// survives with probability `min(1, max(β η²))` and is reweighted (unbiased); `η²` undoes
+/// the radiance scaling of refraction, so that paths in glass are not killed for it.
+#[derive(Clone, Debug)]
+pub struct PathTracer {
+    /// The most scattering vertices on a path.
+    pub max_depth: u32,
+    /// Keep only the contributions of paths that match.
+    pub filter: Option<PathFilter>,
+}
+
+/// What the previous vertex's BSDF sample needs to say for MIS at the next hit.
+struct Previous {
+    /// The point the sample was drawn at.
+    p: Vec3,
+    /// The sample's solid-angle density.
+    pdf: f32,
+    /// True for a delta lobe (and for the camera): the light found counts in full.
+    specular: bool,
+}
+
+impl PathTracer {
+    /// The radiance arriving at the camera along `ray`: one sample of the estimator.
+    pub fn radiance(&self, scene: &Scene, mut ray: Ray, rng: &mut Pcg32) -> Vec3 {
+        let mut l = Vec3::ZERO;
+        let mut beta = Vec3::ONE;
+        let mut eta_scale = 1.0_f32;
+        // The camera path's vertex labels, eye first; kept only for a filter.
+        let mut labels: Vec<u8> = Vec::new();
+        let mut prev = Previous {
+            p: ray.origin,
+            pdf: 0.0,
+            specular: true,
+        };
+        let mut depth = 0;
+        loop {
+            let Some(hit) = scene.intersect(&ray) else {
+                if let Some((_, env)) = scene.environment {
+                    let w = mis_weight(&prev, env.pdf(ray.dir));
+                    let c = beta * env.radiance(ray.dir) * w;
+                    self.add(&mut l, c, None, &labels);
+                }
+                break;
+            };
+            if let Some(index) = hit.light {
+                let light = &scene.lights[index as usize];
+                let le = light.emitted(hit.ng, -ray.dir);
+                if le != Vec3::ZERO {
+                    let w = mis_weight(&prev, light.pdf_hit(prev.p, hit.p, hit.ng));
+                    self.add(&mut l, beta * le * w, None, &labels);
+                }
+            }
+            if depth >= self.max_depth {
+                break;
+            }
+            let sp = ShadingPoint::new(scene.material(hit.material), &hit, -ray.dir);
+            let bsdf = &sp.material.bsdf;
+
+            // Next-event estimation, through the non-delta lobes only. The random numbers
+            // are drawn whatever the filter says, so that filtered renders use the same
+            // paths as the full one (their images add up to it).
+            let nee = sp.material.lobes.is_non_specular() && self.allows(Some(DIFFUSE), &labels);
+            for light in &scene.lights {
+                let u = rng.next_vec2();
+                if nee {
+                    let Some(ls) = light.sample(sp.p, sp.ng, u) else {
+                        continue;
+                    };
+                    let wi = sp.frame.to_local(ls.wi);
+                    if !sp.consistent(ls.wi, wi) {
+                        continue;
+                    }
+                    let f = bsdf.eval(sp.wo, wi);
+                    if f == Vec3::ZERO || ls.li == Vec3::ZERO || scene.occluded(&ls.shadow) {
+                        continue;
+                    }
+                    let w = if ls.delta {
+                        1.0
+                    } else {
+                        power_heuristic(1.0, ls.pdf, 1.0, bsdf.pdf(sp.wo, wi))
+                    };
+                    l += beta * f * ls.li * (wi.z.abs() * w / ls.pdf);
+                }
+            }
+
+            // Continue the path by sampling the BSDF.
+            let Some(s) = bsdf.sample(sp.wo, rng.next_vec2(), rng.next_f32()) else {
+                break;
+            };
+            let wi = sp.frame.to_world(s.wi);
+            if !(s.pdf > 0.0) || !sp.consistent(wi, s.wi) {
+                break;
+            }
+            beta *= s.weight();
+            if !beta.is_finite() || beta == Vec3::ZERO {
+                break;
+            }
+            if s.lobe.is_transmissive() {
+                eta_scale *= s.eta * s.eta;
+            }
+            if self.filter.is_some() {
+                labels.push(if s.is_specular() { SPECULAR } else { DIFFUSE });
+            }
+            prev = Previous {
+                p: sp.p,
+                pdf: s.pdf,
+                specular: s.is_specular(),
+            };
+            ray = Ray::new(offset_origin(sp.p, sp.ng, wi), wi);
+            depth += 1;
+
+            if depth >= ROULETTE_DEPTH {
+                let survive = (beta * eta_scale).max_element().min(1.0);
+                if !(rng.next_f32() < survive) {
+                    break;
+                }
+                beta /= survive;
+            }
+        }
+        l
+    }
+
+    /// True when the filter (if any) accepts a path ending `last`, then `labels` reversed.
+    #[inline]
+    fn allows(&self, last: Option<u8>, labels: &[u8]) -> bool {
+        self.filter.as_ref().is_none_or(|f| f.accepts(last, labels))
+    }
+
+    /// Adds the contribution `c` of the path `L`, `last`, `labels` reversed, `E`, if the
+    /// filter accepts it.
+    #[inline]
+    fn add(&self, l: &mut Vec3, c: Vec3, last: Option<u8>, labels: &[u8]) {
+        if self.allows(last, labels) {
+            *l += c;
+        }
+    }
+}
+
+/// The MIS weight of light found by a BSDF sample, against the light's own sampling density
+/// `light_pdf` for that direction; `1` after a delta lobe or the camera.
+#[inline]
+fn mis_weight(prev: &Previous, light_pdf: f32) -> f32 {
+    if prev.specular {
+        1.0
+    } else {
+        power_heuristic(1.0, prev.pdf, 1.0, light_pdf)
+    }
+}
