@@ -1,8 +1,7 @@
 //! The Lambertian (ideal diffuse) BRDF.
 
-use super::{Bxdf, BxdfSample, Lobes, both_above};
+use super::{Bxdf, BxdfSample, Lobes, both_above, pdf_cosine, sample_cosine};
 use crate::param::ParamError;
-use crate::sampling::{cosine_hemisphere, cosine_hemisphere_pdf};
 use crate::spectrum::Spectrum;
 use core::f32::consts::FRAC_1_PI;
 use glam::{Vec2, Vec3};
@@ -62,30 +61,12 @@ impl<S: Spectrum> Bxdf for Lambert<S> {
 
     #[inline]
     fn sample(&self, wo: Vec3, u: Vec2, _uc: f32) -> Option<BxdfSample<S>> {
-        if !(wo.z > 0.0) {
-            return None;
-        }
-        let wi = cosine_hemisphere(u);
-        let pdf = cosine_hemisphere_pdf(wi.z);
-        if !(pdf > 0.0) {
-            return None;
-        }
-        Some(BxdfSample {
-            wi,
-            f: self.reflectance * FRAC_1_PI,
-            pdf,
-            lobe: Lobes::DIFFUSE_REFLECTION,
-            eta: 1.0,
-        })
+        sample_cosine(wo, u, |_| self.reflectance * FRAC_1_PI)
     }
 
     #[inline]
     fn pdf(&self, wo: Vec3, wi: Vec3) -> f32 {
-        if both_above(wo, wi) {
-            cosine_hemisphere_pdf(wi.z)
-        } else {
-            0.0
-        }
+        pdf_cosine(wo, wi)
     }
 
     #[inline]

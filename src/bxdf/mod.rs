@@ -237,6 +237,42 @@ pub trait Bxdf {
     fn lobes(&self) -> Lobes;
 }
 
+/// Cosine-weighted sampling, shared by the diffuse models: `wi` with density `cos θi / π`
+/// for `wo` above the surface, its value given by `value(wi)`.
+#[inline]
+pub(crate) fn sample_cosine<S>(
+    wo: Vec3,
+    u: Vec2,
+    value: impl FnOnce(Vec3) -> S,
+) -> Option<BxdfSample<S>> {
+    if !(wo.z > 0.0) {
+        return None;
+    }
+    let wi = crate::sampling::cosine_hemisphere(u);
+    let pdf = crate::sampling::cosine_hemisphere_pdf(wi.z);
+    if !(pdf > 0.0) {
+        return None;
+    }
+    Some(BxdfSample {
+        wi,
+        f: value(wi),
+        pdf,
+        lobe: Lobes::DIFFUSE_REFLECTION,
+        eta: 1.0,
+    })
+}
+
+/// The density of [`sample_cosine`]: `cos θi / π` where both directions are above the
+/// surface, else 0.
+#[inline]
+pub(crate) fn pdf_cosine(wo: Vec3, wi: Vec3) -> f32 {
+    if both_above(wo, wi) {
+        crate::sampling::cosine_hemisphere_pdf(wi.z)
+    } else {
+        0.0
+    }
+}
+
 /// `1/|cos θi|` for a delta lobe's value, or `None` when `|cos θi|` is subnormal (or zero),
 /// where the value `F/|cos θi|` would overflow `f32`: such a sample is refused rather than
 /// returned with an infinite value.

@@ -2,6 +2,7 @@
 #![allow(dead_code)]
 
 pub mod laws;
+pub mod quadrature;
 
 use lobe::Vec3;
 use proptest::test_runner::{Config, RngSeed};
