@@ -82,11 +82,18 @@ fn plastic_coat_table_is_within_its_margin() {
         for theta in [0.0f32, 20.0, 45.0, 60.0, 75.0, 85.0] {
             let wo = common::dir(theta, 0.0);
             let mc = albedo_sampled(&coat, wo, &check);
-            let table = f64::from(plastic.coat_albedo_at(wo.z)) - 1e-3;
-            worst = worst.max((table - mc.mean).abs());
+            // The stored entry includes the 1e-3 margin: it must not fall below the true
+            // albedo (else the diffuse weight could push the sum above 1), nor sit more than
+            // twice the margin above it (else the margin wastes energy).
+            let stored = f64::from(plastic.coat_albedo_at(wo.z));
+            worst = worst.max((stored - 1e-3 - mc.mean).abs());
             assert!(
-                (table - mc.mean).abs() <= 1e-3 + k * mc.std_err,
-                "α={alpha} θ={theta}: table {table} vs Monte Carlo {mc}"
+                stored >= mc.mean - k * mc.std_err,
+                "α={alpha} θ={theta}: table {stored} below Monte Carlo {mc}"
+            );
+            assert!(
+                stored - mc.mean <= 2e-3 + k * mc.std_err,
+                "α={alpha} θ={theta}: table {stored} far above Monte Carlo {mc}"
             );
         }
     }

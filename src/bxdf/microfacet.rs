@@ -88,7 +88,10 @@ impl<D: NormalDistribution, F: Fresnel> Microfacet<D, F> {
             return F::Spectrum::zero();
         }
         let g = self.masking.g2(&self.distribution, wo, wi, h);
-        self.fresnel.eval(wo.dot(h)) * (d * g / (4.0 * cos2))
+        // Finite even where the V-cavity term keeps G = 1 for a grazing mirror pair of a very
+        // narrow lobe, where D / (4 cos θo cos θi) exceeds f32.
+        let scale = (d * g / (4.0 * cos2)).min(f32::MAX);
+        self.fresnel.eval(wo.dot(h)) * scale
     }
 
     /// The density of `wi` reflected about the sampled normal `h`: `pdf(m) / (4 wo·h)`.

@@ -139,12 +139,15 @@ impl<D: NormalDistribution> RoughDielectric<D> {
         let (woh, wih) = (wo.dot(c.h), wi.dot(c.h));
         let g = self.masking.g2(&self.distribution, wo, wi, c.h);
         if c.reflection {
-            (dielectric(woh, self.eta) * d * g / (4.0 * wo.z * wi.z)).abs()
+            (dielectric(woh, self.eta) * d * g / (4.0 * wo.z * wi.z))
+                .abs()
+                .min(f32::MAX)
         } else {
             // Fresnel from both cosines: symmetric in wo and wi, so f is reciprocal to
             // round-off even at the critical angle, where Snell's cos θt cancels.
             let f = dielectric_refracted(woh, wih, c.etap);
-            let t = (1.0 - f) * d * g * (wih * woh / (wi.z * wo.z * c.denom2)).abs();
+            let t =
+                ((1.0 - f) * d * g * (wih * woh / (wi.z * wo.z * c.denom2)).abs()).min(f32::MAX);
             match self.mode {
                 TransportMode::Radiance => t / (c.etap * c.etap),
                 TransportMode::Importance => t,

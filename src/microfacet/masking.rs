@@ -38,18 +38,21 @@ impl Masking {
     }
 }
 
-/// Cook-Torrance's V-cavity masking-shadowing term, with `m` the half vector.
+/// Cook-Torrance's V-cavity masking-shadowing term, with `m` the microfacet normal.
 ///
-/// `min(1, 2 |m.z wo.z| / |wo·m|, 2 |m.z wi.z| / |wo·m|)`; `0` when `wo·m = 0`.
+/// `min(1, 2 |m.z wo.z| / |wo·m|, 2 |m.z wi.z| / |wi·m|)`: each direction's term divides by its
+/// own `|w·m|`. For reflection `wo·m = wi·m` and this is Cook & Torrance's formula; for
+/// refraction (Walter et al. 2007, §5.1) it keeps the term symmetric in `wo` and `wi`, so that
+/// a refracting model built on it stays reciprocal. `0` when either `w·m` is `0`.
 #[inline]
 #[must_use]
 pub fn v_cavity(wo: Vec3, wi: Vec3, m: Vec3) -> f32 {
-    let wom = wo.dot(m).abs();
-    if wom == 0.0 {
+    let (wom, wim) = (wo.dot(m).abs(), wi.dot(m).abs());
+    if wom == 0.0 || wim == 0.0 {
         return 0.0;
     }
-    let k = 2.0 * m.z.abs() / wom;
-    (k * wo.z.abs()).min(k * wi.z.abs()).min(1.0)
+    let k = 2.0 * m.z.abs();
+    (k * wo.z.abs() / wom).min(k * wi.z.abs() / wim).min(1.0)
 }
 
 #[cfg(test)]
