@@ -237,6 +237,22 @@ pub fn erf_inv(x: f32) -> f32 {
     }
 }
 
+/// Gauss-Legendre nodes (the positive half) and weights on `[−1, 1]`, 8 points
+/// (Abramowitz & Stegun, table 25.4).
+const GL8_NODES: [f32; 4] = [0.183_434_64, 0.525_532_4, 0.796_666_5, 0.960_289_85];
+const GL8_WEIGHTS: [f32; 4] = [0.362_683_78, 0.313_706_65, 0.222_381_03, 0.101_228_54];
+
+/// 8-point Gauss-Legendre quadrature of `f` over `[a, b]`: exact for polynomials of degree 15.
+/// For the one-time tables models build at construction.
+pub(crate) fn gauss_legendre(a: f32, b: f32, f: impl Fn(f32) -> f32) -> f32 {
+    let (mid, half) = (0.5 * (a + b), 0.5 * (b - a));
+    let mut sum = 0.0;
+    for (x, w) in GL8_NODES.iter().zip(GL8_WEIGHTS) {
+        sum += w * (f(mid - half * x) + f(mid + half * x));
+    }
+    sum * half
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -8,10 +8,6 @@ use crate::spectrum::Spectrum;
 use core::f32::consts::FRAC_1_PI;
 use glam::{Vec2, Vec3};
 
-/// Gauss-Legendre nodes and weights on `[−1, 1]`, 8 points (Abramowitz & Stegun, table 25.4).
-const GL_NODES: [f32; 4] = [0.183_434_64, 0.525_532_4, 0.796_666_5, 0.960_289_85];
-const GL_WEIGHTS: [f32; 4] = [0.362_683_78, 0.313_706_65, 0.222_381_03, 0.101_228_54];
-
 /// A diffuse base of reflectance `ρ` under a smooth dielectric coat of relative index `η`:
 /// the coat reflects as a mirror with the exact Fresnel reflectance `F`, and the base's
 /// diffuse light is weighted by what the coat lets through on the way in and out:
@@ -77,17 +73,12 @@ impl<S: Spectrum> Glazed<S> {
 /// `2 ∫₀¹ g(μ) μ dμ`, by 8-point Gauss-Legendre on 16 panels.
 pub(crate) fn cosine_weighted_average(g: impl Fn(f32) -> f32) -> f32 {
     const PANELS: usize = 16;
-    let h = 1.0 / PANELS as f32;
-    let mut sum = 0.0;
-    for p in 0..PANELS {
-        let mid = (p as f32 + 0.5) * h;
-        for (x, w) in GL_NODES.iter().zip(GL_WEIGHTS) {
-            for mu in [mid - 0.5 * h * x, mid + 0.5 * h * x] {
-                sum += w * g(mu) * mu;
-            }
-        }
-    }
-    sum * h
+    (0..PANELS)
+        .map(|p| {
+            let (a, b) = (p as f32 / PANELS as f32, (p + 1) as f32 / PANELS as f32);
+            2.0 * crate::math::gauss_legendre(a, b, |mu| g(mu) * mu)
+        })
+        .sum()
 }
 
 impl<S: Spectrum> Bxdf for Glazed<S> {

@@ -1,13 +1,10 @@
 //! Exact Smith masking for an isotropic distribution without a closed-form `Λ`, tabulated.
 
-use crate::math::{acos, atan2, cos, safe_sqrt, sin, sqrt, tan};
+use crate::math::{acos, atan2, cos, gauss_legendre, safe_sqrt, sin, sqrt, tan};
 use core::f32::consts::{FRAC_2_PI, FRAC_PI_2, TAU};
 
 /// Entries of the table.
 const ENTRIES: usize = 128;
-/// Gauss-Legendre nodes and weights on `[−1, 1]`, 8 points (Abramowitz & Stegun, table 25.4).
-const GL_NODES: [f32; 4] = [0.183_434_64, 0.525_532_4, 0.796_666_5, 0.960_289_85];
-const GL_WEIGHTS: [f32; 4] = [0.362_683_78, 0.313_706_65, 0.222_381_03, 0.101_228_54];
 
 /// Smith's `G1` of an isotropic distribution, computed at construction from the
 /// projected-area identity `G1(w) ∫ max(0, w·m) D(m) dωm = cos θw` (Heitz 2014, eq. 14), which
@@ -98,15 +95,6 @@ fn integrand(d: &impl Fn(f32, f32) -> f32, theta: f32, cos_w: f32, sin_w: f32) -
     d(c, s) * s * phi_integral(cos_w * c, sin_w * s)
 }
 
-/// 8-point Gauss-Legendre quadrature of `f` over `[a, b]`.
-fn gauss_legendre(a: f32, b: f32, f: impl Fn(f32) -> f32) -> f32 {
-    let (mid, half) = (0.5 * (a + b), 0.5 * (b - a));
-    let mut sum = 0.0;
-    for (x, w) in GL_NODES.iter().zip(GL_WEIGHTS) {
-        sum += w * (f(mid - half * x) + f(mid + half * x));
-    }
-    sum * half
-}
 
 /// `Φ = ∫₀^2π max(0, A + B cos φ) dφ` for `A ≥ 0`, `B ≥ 0`: `2πA` when `A ≥ B`, else
 /// `2 (A φ0 + √(B² − A²))` with `φ0 = acos(−A/B)`.
