@@ -43,10 +43,17 @@ impl<S: Spectrum> Glazed<S> {
     pub fn new(reflectance: S, eta: Eta) -> Result<Self, ParamError> {
         let reflectance = unit_interval("reflectance", reflectance)?;
         let f_avg = cosine_weighted_average(|mu| dielectric(mu, eta));
+        // A coat that reflects everything (η far below 1: total internal reflection at almost
+        // every angle) lets no light reach the base: no diffuse term, rather than 0 · ∞.
+        let diffuse_scale = if f_avg < 1.0 {
+            FRAC_1_PI / (1.0 - f_avg)
+        } else {
+            0.0
+        };
         Ok(Self {
             reflectance,
             eta,
-            diffuse_scale: FRAC_1_PI / (1.0 - f_avg),
+            diffuse_scale,
         })
     }
 
