@@ -95,7 +95,6 @@ fn integrand(d: &impl Fn(f32, f32) -> f32, theta: f32, cos_w: f32, sin_w: f32) -
     d(c, s) * s * phi_integral(cos_w * c, sin_w * s)
 }
 
-
 /// `Φ = ∫₀^2π max(0, A + B cos φ) dφ` for `A ≥ 0`, `B ≥ 0`: `2πA` when `A ≥ B`, else
 /// `2 (A φ0 + √(B² − A²))` with `φ0 = acos(−A/B)`.
 #[inline]
