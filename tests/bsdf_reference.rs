@@ -56,6 +56,10 @@
 //! radiance-mode transmission against `eval_importance`, GGX's bounded reflection pdf,
 //! Beckmann's exact `G1`, and the direction names left unswapped are each rejected.
 
+mod common;
+
+use common::reference::Dev;
+
 use lobe::bxdf::{Bxdf, Lambert, Microfacet, RoughDielectric, TransportMode};
 use lobe::fresnel;
 use lobe::microfacet::{Beckmann, BeckmannMasking, Ggx, Masking, NormalDistribution};
@@ -323,38 +327,6 @@ impl Values {
 // ---------------------------------------------------------------------------------------------
 // Bookkeeping
 // ---------------------------------------------------------------------------------------------
-
-/// The largest deviations of one quantity.
-#[derive(Debug, Default, Clone, Copy)]
-struct Dev {
-    values: usize,
-    max_abs: f64,
-    /// Over values with a non-zero oracle.
-    max_rel: f64,
-    failures: usize,
-    /// Values where the oracle is exactly zero (lobe must be within `ATOL` of it).
-    zeros: usize,
-    /// Oracle zero, lobe non-zero but within `ATOL`.
-    tiny_where_zero: usize,
-}
-
-impl std::fmt::Display for Dev {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(
-            f,
-            "{} values ({} oracle zeros), max abs {:.2e}, max rel {:.2e}, {} failures",
-            self.values, self.zeros, self.max_abs, self.max_rel, self.failures
-        )?;
-        if self.tiny_where_zero > 0 {
-            write!(
-                f,
-                ", {} non-zero (≤ 1e-9) where Mitsuba has 0",
-                self.tiny_where_zero
-            )?;
-        }
-        Ok(())
-    }
-}
 
 #[derive(Debug, Default)]
 struct Report {

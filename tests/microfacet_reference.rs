@@ -49,6 +49,10 @@
 //! The last tests show the check can fail: the exact Beckmann `G1`, a GGX `D` off by 1%, and
 //! `G1` without the orientation factor are each rejected.
 
+mod common;
+
+use common::reference::Dev;
+
 use lobe::microfacet::{Beckmann, BeckmannMasking, Ggx, NormalDistribution, VisibleNormals};
 use lobe::{Alpha, Vec2, Vec3};
 use serde_json::Value;
@@ -225,38 +229,6 @@ fn mitsuba_values<N: NormalDistribution + ?Sized>(n: &N, r: &Value, o: Orientati
 // ---------------------------------------------------------------------------------------------
 // Bookkeeping
 // ---------------------------------------------------------------------------------------------
-
-/// The largest deviations of one quantity.
-#[derive(Debug, Default, Clone, Copy)]
-struct Dev {
-    values: usize,
-    max_abs: f64,
-    /// Over values with a non-zero oracle.
-    max_rel: f64,
-    failures: usize,
-    /// Values where the oracle is exactly zero (an exact zero is demanded there).
-    zeros: usize,
-    /// Oracle exactly zero, lobe non-zero but within `ATOL` (Mitsuba's `1e-20` cut of `D`).
-    tiny_where_zero: usize,
-}
-
-impl std::fmt::Display for Dev {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(
-            f,
-            "{} values ({} oracle zeros), max abs {:.2e}, max rel {:.2e}, {} failures",
-            self.values, self.zeros, self.max_abs, self.max_rel, self.failures
-        )?;
-        if self.tiny_where_zero > 0 {
-            write!(
-                f,
-                ", {} non-zero (≤ 1e-9) where Mitsuba has 0",
-                self.tiny_where_zero
-            )?;
-        }
-        Ok(())
-    }
-}
 
 #[derive(Debug, Default)]
 struct Report {

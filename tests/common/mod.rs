@@ -3,6 +3,7 @@
 
 pub mod laws;
 pub mod quadrature;
+pub mod reference;
 
 use lobe::Vec3;
 use proptest::test_runner::{Config, RngSeed};
