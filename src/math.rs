@@ -116,6 +116,19 @@ pub fn pow5(x: f32) -> f32 {
     x2 * x2 * x
 }
 
+/// `cos^p θ` for `p ≥ 0`, given `cos θ ≥ 0` and `sin² θ`. Near the axis, where `cos θ` rounds
+/// to 1 and a large `p` magnifies that, it is `exp(p/2 · ln(1 − sin² θ))` from the
+/// better-conditioned `sin² θ`; elsewhere `powf(cos θ, p)`.
+#[inline]
+#[must_use]
+pub fn cos_pow(cos: f32, sin2: f32, p: f32) -> f32 {
+    if sin2 < 0.5 {
+        exp(0.5 * p * ln_1p(-sin2))
+    } else {
+        powf(cos.max(0.0), p)
+    }
+}
+
 /// Square root clamped at zero: `sqrt(max(x, 0))`, never NaN for non-NaN input.
 #[inline]
 #[must_use]

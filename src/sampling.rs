@@ -29,7 +29,7 @@
 //! assert!((cosine_hemisphere_inverse(w) - u).length() < 1e-5);
 //! ```
 
-use crate::math::{atan, atan2, copysign, safe_sqrt, sin_cos};
+use crate::math::{atan, atan2, copysign, exp, exp_m1, ln, safe_sqrt, sin_cos};
 use core::f32::consts::{FRAC_1_PI, FRAC_PI_2, FRAC_PI_4, TAU};
 use glam::{Vec2, Vec3};
 
@@ -126,6 +126,33 @@ pub fn cosine_hemisphere_pdf(cos_theta: f32) -> f32 {
 #[must_use]
 pub fn cosine_hemisphere_inverse(w: Vec3) -> Vec2 {
     disk_to_square_concentric(Vec2::new(w.x, w.y))
+}
+
+/// A direction around `+z` with density `(n + 1)/(2π) cos^n θ` on the hemisphere (`n ≥ 0`):
+/// `cos θ = u.x^(1/(n+1))`, the inverse of its CDF in `cos θ`, with
+/// `sin θ = √(−expm1(2 ln u.x/(n + 1)))`, which keeps its digits for large `n`.
+///
+/// The lobe of Phong-like models (Lafortune & Willems 1994) and the `D cos θ` sampler of the
+/// normalised Blinn-Phong distribution (`n = p + 1`; Walter et al. 2007, eq. 31).
+#[inline]
+#[must_use]
+pub fn cosine_power_hemisphere(u: Vec2, n: f32) -> Vec3 {
+    let l = ln(u.x.max(f32::MIN_POSITIVE)) / (n + 1.0);
+    let cos = exp(l);
+    let sin = safe_sqrt(-exp_m1(2.0 * l));
+    let (s, c) = sin_cos(TAU * u.y);
+    Vec3::new(sin * c, sin * s, cos)
+}
+
+/// The density of [`cosine_power_hemisphere`]: `(n + 1)/(2π) max(0, cos θ)^n`.
+#[inline]
+#[must_use]
+pub fn cosine_power_hemisphere_pdf(cos_theta: f32, n: f32) -> f32 {
+    if cos_theta > 0.0 {
+        (n + 1.0) * 0.5 * FRAC_1_PI * crate::math::powf(cos_theta.min(1.0), n)
+    } else {
+        0.0
+    }
 }
 
 /// A direction uniformly distributed on the upper hemisphere (`z ≥ 0`).

@@ -18,9 +18,9 @@ use lobe::{Vec2, Vec3};
 /// Samples per chi-square run.
 const SAMPLES: usize = 1_000_000;
 /// Chi-square runs in this file that are expected to pass: cosine hemisphere, uniform
-/// hemisphere, uniform sphere, concentric disk, three cones, and the half-failing sampler
-/// against its halved density.
-const PASSING_RUNS: usize = 8;
+/// hemisphere, uniform sphere, concentric disk, three cones, the half-failing sampler
+/// against its halved density, and three cosine-power lobes.
+const PASSING_RUNS: usize = 11;
 
 /// The configuration for one run: default bins, a seed of its own, corrected significance.
 fn config(seed: u64) -> Chi2Config {
@@ -62,6 +62,20 @@ fn cosine_hemisphere_matches_its_pdf() {
         &config(11),
     );
     assert_passes("cosine hemisphere", &report);
+}
+
+#[test]
+fn cosine_power_hemisphere_matches_its_pdf() {
+    // n = 0 is the uniform hemisphere and n = 1 the cosine one; n = 8 is a narrow lobe still
+    // several bins wide.
+    for (i, n) in [0.0f32, 1.0, 8.0].into_iter().enumerate() {
+        let report = chi2_sphere(
+            |u| Some(lobe::sampling::cosine_power_hemisphere(u, n)),
+            |w| f64::from(lobe::sampling::cosine_power_hemisphere_pdf(w.z, n)),
+            &config(40 + i as u64),
+        );
+        assert_passes(&format!("cosine power n = {n}"), &report);
+    }
 }
 
 #[test]

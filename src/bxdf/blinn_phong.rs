@@ -1,12 +1,11 @@
 //! The Blinn-Phong BRDF of the handouts ("modified Blinn-Phong") and its normalised form.
 
 use super::phong::{
-    check_exponent, check_sum, cos_power_norm, diffuse_probability, sample_cos_power,
-    weighted_lobes,
+    check_exponent, check_sum, cos_power_norm, diffuse_probability, weighted_lobes,
 };
 use super::{Bxdf, BxdfSample, Lobes, both_above};
 use crate::frame::reflect;
-use crate::math::{exp, ln_1p, powf, sqrt};
+use crate::math::{cos_pow, exp, sqrt};
 use crate::param::ParamError;
 use crate::sampling::{cosine_hemisphere, cosine_hemisphere_pdf};
 use crate::spectrum::Spectrum;
@@ -208,13 +207,8 @@ impl<S: Spectrum> BlinnPhong<S> {
         if !(s2 >= f32::MIN_POSITIVE) {
             return (0.0, 1.0);
         }
-        let sin2 = sxy / s2;
-        let cos_pow = if sin2 < 0.5 {
-            exp(0.5 * self.exponent * ln_1p(-sin2))
-        } else {
-            powf(s.z * s.z / s2, 0.5 * self.exponent)
-        };
-        (cos_pow, sqrt(s2))
+        let len = sqrt(s2);
+        (cos_pow(s.z / len, sxy / s2, self.exponent), len)
     }
 
     /// The BRDF from `(n·h)^p`.
@@ -258,7 +252,7 @@ impl<S: Spectrum> Bxdf for BlinnPhong<S> {
         let (wi, lobe_kind) = if uc < self.p_diffuse {
             (cosine_hemisphere(u), Lobes::DIFFUSE_REFLECTION)
         } else {
-            let h = sample_cos_power(u, self.exponent);
+            let h = crate::sampling::cosine_power_hemisphere(u, self.exponent);
             (reflect(wo, h), Lobes::GLOSSY_REFLECTION)
         };
         // Also catches wo·h ≤ 0, which reflects wo below the surface.

@@ -2,11 +2,11 @@
 
 use super::{Bxdf, BxdfSample, Lobes, both_above};
 use crate::frame::Frame;
-use crate::math::{exp, exp_m1, ln, ln_1p, powf, sin_cos, sqrt};
+use crate::math::{exp, ln_1p, powf, sqrt};
 use crate::param::ParamError;
 use crate::sampling::{cosine_hemisphere, cosine_hemisphere_pdf};
 use crate::spectrum::Spectrum;
-use core::f32::consts::{FRAC_1_PI, TAU};
+use core::f32::consts::FRAC_1_PI;
 use glam::{Vec2, Vec3};
 
 /// The modified, normalised Phong BRDF: a Lambertian term plus a cosine-power lobe around
@@ -204,7 +204,7 @@ impl<S: Spectrum> Bxdf for Phong<S> {
             (cosine_hemisphere(u), Lobes::DIFFUSE_REFLECTION)
         } else {
             let r = Vec3::new(-wo.x, -wo.y, wo.z);
-            let local = sample_cos_power(u, self.exponent);
+            let local = crate::sampling::cosine_power_hemisphere(u, self.exponent);
             (
                 Frame::from_normal(r).to_world(local),
                 Lobes::GLOSSY_REFLECTION,
@@ -302,16 +302,4 @@ pub(super) fn cos_power(one_minus_cos: f32, p: f32) -> f32 {
 #[inline]
 pub(super) fn cos_power_norm(p: f32) -> f32 {
     (p + 1.0) * 0.5 * FRAC_1_PI
-}
-
-/// A direction around `+z` with density `(p + 1)/(2π) cos^p θ` on the hemisphere:
-/// `cos θ = u^(1/(p+1))`, the inverse of the CDF `1 − cos^(p+1)` (with `u` for `1 − u`), with
-/// `sin θ = √(−expm1(2 ln u/(p + 1)))`, which keeps its digits for large `p`.
-#[inline]
-pub(super) fn sample_cos_power(u: Vec2, p: f32) -> Vec3 {
-    let l = ln(u.x.max(f32::MIN_POSITIVE)) / (p + 1.0);
-    let cos = exp(l);
-    let sin = sqrt((-exp_m1(2.0 * l)).max(0.0));
-    let (s, c) = sin_cos(TAU * u.y);
-    Vec3::new(sin * c, sin * s, cos)
 }

@@ -2,9 +2,9 @@
 
 use super::smith_table::SmithTable;
 use super::{Beckmann, NormalDistribution};
-use crate::math::{exp, exp_m1, ln, ln_1p, powf, sin_cos, sqrt};
+use crate::math::{cos_pow, exp, exp_m1, ln, sqrt};
 use crate::param::{Alpha, ParamError};
-use core::f32::consts::{FRAC_1_PI, TAU};
+use core::f32::consts::FRAC_1_PI;
 use glam::{Vec2, Vec3};
 
 /// The normalised Blinn-Phong distribution of microfacet normals:
@@ -115,17 +115,6 @@ impl BlinnPhongNdf {
     }
 }
 
-/// `cos^p θ` for `p ≥ 0`. Near the normal, where `cos θ` rounds to 1 and a large `p`
-/// magnifies that, it is `exp(p/2 · ln(1 − sin² θ))` from the exact-ish `sin² θ`.
-#[inline]
-fn cos_pow(cos: f32, sin2: f32, p: f32) -> f32 {
-    if sin2 < 0.5 {
-        exp(0.5 * p * ln_1p(-sin2))
-    } else {
-        powf(cos.max(0.0), p)
-    }
-}
-
 impl NormalDistribution for BlinnPhongNdf {
     #[inline]
     fn d(&self, m: Vec3) -> f32 {
@@ -172,10 +161,7 @@ impl NormalDistribution for BlinnPhongNdf {
     /// (Walter et al. 2007, eq. 31); `sin² θm = −expm1(2 ln u/(p+2))` keeps its digits for
     /// large `p`.
     fn sample_d_cos(&self, u: Vec2) -> Vec3 {
-        let l = ln(u.x.max(f32::MIN_POSITIVE)) / (self.exponent + 2.0);
-        let cos = exp(l);
-        let sin = sqrt((-exp_m1(2.0 * l)).max(0.0));
-        let (s, c) = sin_cos(TAU * u.y);
-        Vec3::new(sin * c, sin * s, cos)
+        // D cos θ ∝ cos^(p+1) θ.
+        crate::sampling::cosine_power_hemisphere(u, self.exponent + 1.0)
     }
 }
