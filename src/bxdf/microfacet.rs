@@ -77,10 +77,9 @@ impl<D: NormalDistribution, F: Fresnel> Microfacet<D, F> {
         &self.distribution
     }
 
-    /// `f` for `wo`, `wi` above the surface and their unit half vector `h`.
+    /// `f` for `wo`, `wi` above the surface, their unit half vector `h` and `d = D(h)`.
     #[inline]
-    fn value(&self, wo: Vec3, wi: Vec3, h: Vec3) -> F::Spectrum {
-        let d = self.distribution.d(h);
+    fn value(&self, wo: Vec3, wi: Vec3, h: Vec3, d: f32) -> F::Spectrum {
         // A product of cosines that underflows (subnormal cos θ) would divide 0 by 0: the
         // light there is grazing to within 1e-38 and contributes nothing.
         let cos2 = wo.z * wi.z;
@@ -94,14 +93,15 @@ impl<D: NormalDistribution, F: Fresnel> Microfacet<D, F> {
         self.fresnel.eval(wo.dot(h)) * scale
     }
 
-    /// The density of `wi` reflected about the sampled normal `h`: `pdf(m) / (4 wo·h)`.
+    /// The density of `wi` reflected about the sampled normal `h` (with `d = D(h)`):
+    /// `pdf(m) / (4 wo·h)`.
     #[inline]
-    fn density(&self, wo: Vec3, h: Vec3) -> f32 {
+    fn density(&self, wo: Vec3, h: Vec3, d: f32) -> f32 {
         let woh = wo.dot(h);
         if !(woh > 0.0) {
             return 0.0;
         }
-        self.distribution.pdf_reflection(wo, h) / (4.0 * woh)
+        self.distribution.pdf_reflection_given_d(wo, h, d) / (4.0 * woh)
     }
 }
 
@@ -114,7 +114,7 @@ impl<D: NormalDistribution, F: Fresnel> Bxdf for Microfacet<D, F> {
             return F::Spectrum::zero();
         }
         match half_vector(wo, wi) {
-            Some(h) => self.value(wo, wi, h),
+            Some(h) => self.value(wo, wi, h, self.distribution.d(h)),
             None => F::Spectrum::zero(),
         }
     }
@@ -133,13 +133,15 @@ impl<D: NormalDistribution, F: Fresnel> Bxdf for Microfacet<D, F> {
         // `m`: the two differ by rounding, and a renderer's MIS needs `pdf` to reproduce
         // the sample's density exactly.
         let h = half_vector(wo, wi)?;
-        let pdf = self.density(wo, h);
+        // D once, for both the value and the density.
+        let d = self.distribution.d(h);
+        let pdf = self.density(wo, h, d);
         if !(pdf > 0.0 && pdf.is_finite()) {
             return None;
         }
         Some(BxdfSample {
             wi,
-            f: self.value(wo, wi, h),
+            f: self.value(wo, wi, h, d),
             pdf,
             lobe: Lobes::GLOSSY_REFLECTION,
             eta: 1.0,
@@ -151,7 +153,7 @@ impl<D: NormalDistribution, F: Fresnel> Bxdf for Microfacet<D, F> {
         if !both_above(wo, wi) {
             return 0.0;
         }
-        half_vector(wo, wi).map_or(0.0, |h| self.density(wo, h))
+        half_vector(wo, wi).map_or(0.0, |h| self.density(wo, h, self.distribution.d(h)))
     }
 
     #[inline]

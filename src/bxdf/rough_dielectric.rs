@@ -129,10 +129,9 @@ impl<D: NormalDistribution> RoughDielectric<D> {
         })
     }
 
-    /// `f` for a configuration.
+    /// `f` for a configuration, with `d = D(h)`.
     #[inline]
-    fn value(&self, wo: Vec3, wi: Vec3, c: &Configuration) -> f32 {
-        let d = self.distribution.d(c.h);
+    fn value(&self, wo: Vec3, wi: Vec3, c: &Configuration, d: f32) -> f32 {
         if d == 0.0 {
             return 0.0;
         }
@@ -155,12 +154,12 @@ impl<D: NormalDistribution> RoughDielectric<D> {
         }
     }
 
-    /// The density of a configuration.
+    /// The density of a configuration, with `d = D(h)`.
     #[inline]
-    fn density(&self, wo: Vec3, wi: Vec3, c: &Configuration) -> f32 {
+    fn density(&self, wo: Vec3, wi: Vec3, c: &Configuration, d: f32) -> f32 {
         let woh = wo.dot(c.h);
         let f = dielectric(woh, self.eta);
-        let pdf_h = self.distribution.pdf(wo, c.h);
+        let pdf_h = self.distribution.pdf_given_d(wo, c.h, d);
         if c.reflection {
             pdf_h * f / (4.0 * woh.abs())
         } else {
@@ -187,7 +186,7 @@ impl<D: NormalDistribution> Bxdf for RoughDielectric<D> {
     #[inline]
     fn eval(&self, wo: Vec3, wi: Vec3) -> f32 {
         self.configuration(wo, wi)
-            .map_or(0.0, |c| self.value(wo, wi, &c))
+            .map_or(0.0, |c| self.value(wo, wi, &c, self.distribution.d(c.h)))
     }
 
     fn sample(&self, wo: Vec3, u: Vec2, uc: f32) -> Option<BxdfSample<f32>> {
@@ -206,7 +205,9 @@ impl<D: NormalDistribution> Bxdf for RoughDielectric<D> {
         if c.reflection != (uc < f) {
             return None;
         }
-        let pdf = self.density(wo, wi, &c);
+        // D once, for both the value and the density.
+        let d = self.distribution.d(c.h);
+        let pdf = self.density(wo, wi, &c, d);
         if !(pdf > 0.0 && pdf.is_finite()) {
             return None;
         }
@@ -217,7 +218,7 @@ impl<D: NormalDistribution> Bxdf for RoughDielectric<D> {
         };
         Some(BxdfSample {
             wi,
-            f: self.value(wo, wi, &c),
+            f: self.value(wo, wi, &c, d),
             pdf,
             lobe,
             eta,
@@ -227,7 +228,7 @@ impl<D: NormalDistribution> Bxdf for RoughDielectric<D> {
     #[inline]
     fn pdf(&self, wo: Vec3, wi: Vec3) -> f32 {
         self.configuration(wo, wi)
-            .map_or(0.0, |c| self.density(wo, wi, &c))
+            .map_or(0.0, |c| self.density(wo, wi, &c, self.distribution.d(c.h)))
     }
 
     #[inline]

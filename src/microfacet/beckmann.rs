@@ -165,6 +165,11 @@ impl NormalDistribution for Beckmann {
         self.d_visible(w, m)
     }
 
+    #[inline]
+    fn pdf_given_d(&self, w: Vec3, m: Vec3, d: f32) -> f32 {
+        self.d_visible_given_d(w, m, d)
+    }
+
     /// Slopes drawn from the Gaussian slope distribution, radius `√(−ln(1 − u))`, stretched
     /// by `(αx, αy)` (Walter et al. 2007, eq. 28, in slope form).
     #[inline]

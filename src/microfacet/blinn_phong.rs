@@ -157,6 +157,11 @@ impl NormalDistribution for BlinnPhongNdf {
         self.pdf_d_cos(m)
     }
 
+    #[inline]
+    fn pdf_given_d(&self, _w: Vec3, m: Vec3, d: f32) -> f32 {
+        d * m.z.max(0.0)
+    }
+
     /// `cos θm = u^(1/(p+2))`, the inverse of the CDF `cos^(p+2)` of `D cos θ` over `cos θ`
     /// (Walter et al. 2007, eq. 31); `sin² θm = −expm1(2 ln u/(p+2))` keeps its digits for
     /// large `p`.

@@ -148,8 +148,13 @@ impl Ggx {
     /// Tokuyoshi 2023, eq. 7).
     #[must_use]
     pub fn d_visible_bounded(&self, w: Vec3, m: Vec3) -> f32 {
+        self.d_visible_bounded_given_d(w, m, self.d(m))
+    }
+
+    /// [`d_visible_bounded`](Self::d_visible_bounded) with `d = D(m)` already known.
+    fn d_visible_bounded_given_d(&self, w: Vec3, m: Vec3, d: f32) -> f32 {
         let w = upper(w);
-        let dv = self.d_visible(w, m);
+        let dv = self.d_visible_given_d(w, m, d);
         if dv == 0.0 {
             return 0.0;
         }
@@ -200,7 +205,7 @@ impl NormalDistribution for Ggx {
     }
 
     #[inline]
-    fn d_visible(&self, w: Vec3, m: Vec3) -> f32 {
+    fn d_visible_given_d(&self, w: Vec3, m: Vec3, d: f32) -> f32 {
         let w = upper(w);
         let wm = w.dot(m);
         if !(w.z > 0.0 && wm > 0.0) {
@@ -208,7 +213,12 @@ impl NormalDistribution for Ggx {
         }
         // G1(w)/cos θw = 2 / (wz + |(αx wx, αy wy, wz)|), finite at grazing.
         let len = sqrt(self.stretched_xy2(w) + w.z * w.z);
-        2.0 * wm * self.d(m) / (w.z + len)
+        2.0 * wm * d / (w.z + len)
+    }
+
+    #[inline]
+    fn pdf_given_d(&self, w: Vec3, m: Vec3, d: f32) -> f32 {
+        self.d_visible_given_d(w, m, d)
     }
 
     #[inline]
@@ -232,10 +242,15 @@ impl NormalDistribution for Ggx {
 
     #[inline]
     fn pdf_reflection(&self, w: Vec3, m: Vec3) -> f32 {
+        self.pdf_reflection_given_d(w, m, self.d(m))
+    }
+
+    #[inline]
+    fn pdf_reflection_given_d(&self, w: Vec3, m: Vec3, d: f32) -> f32 {
         if self.bounded {
-            self.d_visible_bounded(w, m)
+            self.d_visible_bounded_given_d(w, m, d)
         } else {
-            self.d_visible(w, m)
+            self.d_visible_given_d(w, m, d)
         }
     }
 

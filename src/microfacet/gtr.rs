@@ -199,6 +199,11 @@ impl NormalDistribution for Gtr {
         self.pdf_d_cos(m)
     }
 
+    #[inline]
+    fn pdf_given_d(&self, _w: Vec3, m: Vec3, d: f32) -> f32 {
+        d * m.z.max(0.0)
+    }
+
     /// Inverts the CDF of `x = cos² θm`, whose density is `∝ (1 + t x)^(−γ)` with
     /// `t = α² − 1`: `(1 + t x)^(1−γ) = 1 + u ((α²)^(1−γ) − 1)` (`γ ≠ 1`), or
     /// `1 + t x = (α²)^u` (`γ = 1`); Burley 2012, appendix B.2, eqs. 6–7 in `cos²` form.

@@ -83,13 +83,16 @@ pub trait NormalDistribution {
     /// [`sample`](Self::sample): a refracting model sees the surface from either side.
     #[must_use]
     fn d_visible(&self, w: Vec3, m: Vec3) -> f32 {
+        self.d_visible_given_d(w, m, self.d(m))
+    }
+
+    /// [`d_visible`](Self::d_visible) when `d = D(m)` is already known: a model that has
+    /// evaluated `D` for its value passes it here instead of evaluating it again.
+    #[must_use]
+    fn d_visible_given_d(&self, w: Vec3, m: Vec3, d: f32) -> f32 {
         let w = upper(w);
         let wm = w.dot(m);
-        if !(w.z > 0.0 && wm > 0.0) {
-            return 0.0;
-        }
-        let d = self.d(m);
-        if d == 0.0 {
+        if !(w.z > 0.0 && wm > 0.0) || d == 0.0 {
             return 0.0;
         }
         // G1/cos θ has a finite limit at grazing; keep the product in that order.
@@ -109,6 +112,15 @@ pub trait NormalDistribution {
     #[must_use]
     fn pdf(&self, w: Vec3, m: Vec3) -> f32;
 
+    /// [`pdf`](Self::pdf) when `d = D(m)` is already known. The default evaluates `pdf`
+    /// (and so `D`) again; the crate's distributions use `d`.
+    #[inline]
+    #[must_use]
+    fn pdf_given_d(&self, w: Vec3, m: Vec3, d: f32) -> f32 {
+        let _ = d;
+        self.pdf(w, m)
+    }
+
     /// Draws a normal for *reflecting* `w` (`w` above the surface), with density
     /// [`pdf_reflection`](Self::pdf_reflection). The default is [`sample`](Self::sample);
     /// a distribution may instead skip normals that would reflect `w` below the horizon
@@ -124,6 +136,13 @@ pub trait NormalDistribution {
     #[must_use]
     fn pdf_reflection(&self, w: Vec3, m: Vec3) -> f32 {
         self.pdf(w, m)
+    }
+
+    /// [`pdf_reflection`](Self::pdf_reflection) when `d = D(m)` is already known.
+    #[inline]
+    #[must_use]
+    fn pdf_reflection_given_d(&self, w: Vec3, m: Vec3, d: f32) -> f32 {
+        self.pdf_given_d(w, m, d)
     }
 
     /// Draws a microfacet normal with density `D(m) cos θm` (the classic sampler of Walter
