@@ -58,7 +58,7 @@
 
 mod common;
 
-use common::reference::Dev;
+use common::reference::{Dev, field, field32, vec_field};
 
 use lobe::bxdf::{Bxdf, Lambert, Microfacet, RoughDielectric, TransportMode};
 use lobe::fresnel;
@@ -90,46 +90,13 @@ const PLUGINS: [&str; 3] = ["diffuse", "roughconductor", "roughdielectric"];
 
 /// The records of the reference file and the count its `meta` announces.
 fn load() -> (Vec<Value>, usize) {
-    let file = "mitsuba_bsdf.json";
-    let data: Value = serde_json::from_str(BSDF).unwrap_or_else(|e| panic!("{file} parses: {e}"));
-    let records = data["records"]
-        .as_array()
-        .unwrap_or_else(|| panic!("{file}: records"))
-        .clone();
-    let n_meta = data["meta"]["n_records"]
-        .as_u64()
-        .unwrap_or_else(|| panic!("{file}: meta.n_records")) as usize;
-    assert_eq!(
-        records.len(),
-        n_meta,
-        "{file}: record count disagrees with meta"
-    );
-    (records, n_meta)
-}
-
-fn field(r: &Value, name: &str) -> f64 {
-    r[name]
-        .as_f64()
-        .unwrap_or_else(|| panic!("field {name} in {r}"))
-}
-
-/// An input field. The JSON holds exact f32 values (CONVENTIONS §0), so the cast is exact.
-fn field32(r: &Value, name: &str) -> f32 {
-    field(r, name) as f32
+    common::reference::load(BSDF, "mitsuba_bsdf.json")
 }
 
 fn text<'a>(r: &'a Value, name: &str) -> &'a str {
     r[name]
         .as_str()
         .unwrap_or_else(|| panic!("field {name} in {r}"))
-}
-
-fn vec_field(r: &Value, prefix: &str) -> Vec3 {
-    Vec3::new(
-        field32(r, &format!("{prefix}_x")),
-        field32(r, &format!("{prefix}_y")),
-        field32(r, &format!("{prefix}_z")),
-    )
 }
 
 /// lobe's `(wo, wi)` of a record: Mitsuba's `(wi, wo)`.

@@ -5,6 +5,8 @@
 
 mod common;
 
+use common::reference::{field, load};
+
 use lobe::fresnel::{self, DielectricFresnel};
 use lobe::{ComplexIor, Eta, Spectrum, Vec3, Vec4};
 use proptest::prelude::*;
@@ -568,15 +570,12 @@ const ILL_TAGS: [&str; 3] = ["near_critical", "eta_near_1", "u_extreme"];
 const ILL_ATOL_F: f64 = 0.06;
 const ILL_ATOL_COS_T: f64 = 5e-4;
 
-fn load_reference() -> Value {
-    let text = include_str!("data/mitsuba_fresnel.json");
-    serde_json::from_str(text).expect("tests/data/mitsuba_fresnel.json parses")
-}
-
-fn field(r: &Value, name: &str) -> f64 {
-    r[name]
-        .as_f64()
-        .unwrap_or_else(|| panic!("field {name} in {r}"))
+/// Every record of the reference file, and the count its `meta` announces (equal: checked).
+fn load_reference() -> (Vec<Value>, usize) {
+    load(
+        include_str!("data/mitsuba_fresnel.json"),
+        "mitsuba_fresnel.json",
+    )
 }
 
 /// The largest deviations in one category of records.
@@ -654,10 +653,9 @@ fn check_reference(
     dielectric: impl Fn(f32, Eta) -> DielectricFresnel,
     conductor: impl Fn(f32, &ComplexIor<f32>) -> f32,
 ) -> Report {
-    let data = load_reference();
-    let records = data["records"].as_array().expect("records");
+    let (records, _) = load_reference();
     let mut rep = Report::default();
-    for r in records {
+    for r in &records {
         let case = r["case"].as_str().expect("case");
         let ill = ILL_TAGS.iter().any(|t| case.contains(t));
         // The JSON holds exact f32 values, so the narrowing casts are exact.
@@ -707,13 +705,8 @@ fn check_reference(
 
 #[test]
 fn agrees_with_every_mitsuba_record() {
-    let data = load_reference();
-    let n_file = data["records"].as_array().expect("records").len();
-    let n_meta = data["meta"]["n_records"].as_u64().expect("meta.n_records") as usize;
-    assert_eq!(
-        n_file, n_meta,
-        "the file's record count disagrees with its meta"
-    );
+    // `load` asserts that the file's record count equals its meta.
+    let (_, n_meta) = load_reference();
 
     let rep = check_reference(fresnel::dielectric_full, fresnel::conductor::<f32>);
     eprintln!(
@@ -733,7 +726,7 @@ fn agrees_with_every_mitsuba_record() {
     );
     assert_eq!(
         rep.dielectric + rep.conductor,
-        n_file,
+        n_meta,
         "every record is checked"
     );
     assert!(rep.dielectric > 100 && rep.conductor > 50);
@@ -778,10 +771,10 @@ fn slipped_schlick_is_caught_by_hand_values_and_by_mitsuba() {
 
     // Against Mitsuba's glass (η = 1.5, outside, cos in (0, 1]): Schlick is an approximation
     // with a known error of a few percent; the slip is off by almost 1.
-    let data = load_reference();
+    let (records, _) = load_reference();
     let mut n = 0;
     let (mut good, mut bad) = (0.0f64, 0.0f64);
-    for r in data["records"].as_array().expect("records") {
+    for r in &records {
         if r["kind"] != "dielectric"
             || field(r, "eta") as f32 != 1.5
             || field(r, "cos_theta_i") <= 0.0

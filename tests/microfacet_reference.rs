@@ -51,7 +51,7 @@
 
 mod common;
 
-use common::reference::Dev;
+use common::reference::{Dev, field, field32, load, vec_field};
 
 use lobe::microfacet::{Beckmann, BeckmannMasking, Ggx, NormalDistribution, VisibleNormals};
 use lobe::{Alpha, Vec2, Vec3};
@@ -80,43 +80,6 @@ const QUANTITIES: [&str; 6] = [
 // ---------------------------------------------------------------------------------------------
 // Reading the records
 // ---------------------------------------------------------------------------------------------
-
-/// The records of a reference file and the count its `meta` announces.
-fn load(text: &str, file: &str) -> (Vec<Value>, usize) {
-    let data: Value = serde_json::from_str(text).unwrap_or_else(|e| panic!("{file} parses: {e}"));
-    let records = data["records"]
-        .as_array()
-        .unwrap_or_else(|| panic!("{file}: records"))
-        .clone();
-    let n_meta = data["meta"]["n_records"]
-        .as_u64()
-        .unwrap_or_else(|| panic!("{file}: meta.n_records")) as usize;
-    assert_eq!(
-        records.len(),
-        n_meta,
-        "{file}: record count disagrees with meta"
-    );
-    (records, n_meta)
-}
-
-fn field(r: &Value, name: &str) -> f64 {
-    r[name]
-        .as_f64()
-        .unwrap_or_else(|| panic!("field {name} in {r}"))
-}
-
-/// An input field. The JSON holds exact f32 values (CONVENTIONS §0), so the cast is exact.
-fn field32(r: &Value, name: &str) -> f32 {
-    field(r, name) as f32
-}
-
-fn vec_field(r: &Value, prefix: &str) -> Vec3 {
-    Vec3::new(
-        field32(r, &format!("{prefix}_x")),
-        field32(r, &format!("{prefix}_y")),
-        field32(r, &format!("{prefix}_z")),
-    )
-}
 
 fn alpha(r: &Value, name: &str) -> Alpha {
     Alpha::new(field32(r, name)).unwrap_or_else(|e| panic!("{name} of {r}: {e}"))

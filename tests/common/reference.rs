@@ -1,4 +1,47 @@
-//! Bookkeeping shared by the tests against Mitsuba 3's reference values.
+//! Reading and bookkeeping shared by the tests against Mitsuba 3's reference values.
+
+use lobe::Vec3;
+use serde_json::Value;
+
+/// The records of a reference file (its text and name) and the count its `meta` announces,
+/// which the record count must equal.
+pub fn load(text: &str, file: &str) -> (Vec<Value>, usize) {
+    let data: Value = serde_json::from_str(text).unwrap_or_else(|e| panic!("{file} parses: {e}"));
+    let records = data["records"]
+        .as_array()
+        .unwrap_or_else(|| panic!("{file}: records"))
+        .clone();
+    let n_meta = data["meta"]["n_records"]
+        .as_u64()
+        .unwrap_or_else(|| panic!("{file}: meta.n_records")) as usize;
+    assert_eq!(
+        records.len(),
+        n_meta,
+        "{file}: record count disagrees with meta"
+    );
+    (records, n_meta)
+}
+
+/// A numeric field of a record.
+pub fn field(r: &Value, name: &str) -> f64 {
+    r[name]
+        .as_f64()
+        .unwrap_or_else(|| panic!("field {name} in {r}"))
+}
+
+/// An input field. The JSON holds exact f32 values (CONVENTIONS §0), so the cast is exact.
+pub fn field32(r: &Value, name: &str) -> f32 {
+    field(r, name) as f32
+}
+
+/// The vector stored as `{prefix}_x`, `{prefix}_y`, `{prefix}_z`.
+pub fn vec_field(r: &Value, prefix: &str) -> Vec3 {
+    Vec3::new(
+        field32(r, &format!("{prefix}_x")),
+        field32(r, &format!("{prefix}_y")),
+        field32(r, &format!("{prefix}_z")),
+    )
+}
 
 /// The largest deviations of one quantity.
 #[derive(Debug, Default, Clone, Copy)]
