@@ -1,6 +1,6 @@
 //! The Blinn-Phong BRDF of the handouts ("modified Blinn-Phong") and its normalised form.
 
-use super::phong::{
+use super::diffuse_glossy::{
     check_exponent, check_sum, cos_power_norm, diffuse_probability, weighted_lobes,
 };
 use super::{Bxdf, BxdfSample, Lobes, both_above};

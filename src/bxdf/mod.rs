@@ -18,6 +18,7 @@
 //! `η_inside / η_outside` with the normal pointing outside.
 
 mod blinn_phong;
+mod diffuse_glossy;
 mod disney_diffuse;
 mod eon;
 mod glazed;
