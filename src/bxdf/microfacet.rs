@@ -77,6 +77,19 @@ impl<D: NormalDistribution, F: Fresnel> Microfacet<D, F> {
         &self.distribution
     }
 
+    /// `(f, pdf)` at once for a pair above the surface, with `D` evaluated once: for a model
+    /// that mixes this lobe with another.
+    #[inline]
+    pub(crate) fn value_and_density(&self, wo: Vec3, wi: Vec3) -> (F::Spectrum, f32) {
+        match half_vector(wo, wi).filter(|_| both_above(wo, wi)) {
+            Some(h) => {
+                let d = self.distribution.d(h);
+                (self.value(wo, wi, h, d), self.density(wo, h, d))
+            }
+            None => (F::Spectrum::zero(), 0.0),
+        }
+    }
+
     /// `f` for `wo`, `wi` above the surface, their unit half vector `h` and `d = D(h)`.
     #[inline]
     fn value(&self, wo: Vec3, wi: Vec3, h: Vec3, d: f32) -> F::Spectrum {

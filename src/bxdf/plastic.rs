@@ -138,21 +138,26 @@ impl<D: NormalDistribution, S: Spectrum> Bxdf for Plastic<D, S> {
             return None;
         }
         let p_coat = self.coat_probability(wo);
-        let (wi, lobe) = if uc < p_coat {
-            (self.coat.sample(wo, u, 0.5)?.wi, Lobes::GLOSSY_REFLECTION)
+        // The coat's value and density at wi: from its own sample when it drew wi (the same
+        // numbers its eval and pdf give), else evaluated together with one D.
+        let (wi, coat_f, coat_pdf, lobe) = if uc < p_coat {
+            let s = self.coat.sample(wo, u, 0.5)?;
+            (s.wi, s.f, s.pdf, Lobes::GLOSSY_REFLECTION)
         } else {
-            (cosine_hemisphere(u), Lobes::DIFFUSE_REFLECTION)
+            let wi = cosine_hemisphere(u);
+            let (f, pdf) = self.coat.value_and_density(wo, wi);
+            (wi, f, pdf, Lobes::DIFFUSE_REFLECTION)
         };
         if !(wi.z > 0.0) {
             return None;
         }
-        let pdf = p_coat * self.coat.pdf(wo, wi) + (1.0 - p_coat) * cosine_hemisphere_pdf(wi.z);
+        let pdf = p_coat * coat_pdf + (1.0 - p_coat) * cosine_hemisphere_pdf(wi.z);
         if !(pdf > 0.0 && pdf.is_finite()) {
             return None;
         }
         Some(BxdfSample {
             wi,
-            f: self.eval(wo, wi),
+            f: S::splat(coat_f) + self.diffuse(wo, wi),
             pdf,
             lobe,
             eta: 1.0,

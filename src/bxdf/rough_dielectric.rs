@@ -129,18 +129,23 @@ impl<D: NormalDistribution> RoughDielectric<D> {
         })
     }
 
-    /// `f` for a configuration, with `d = D(h)`.
+    /// The Fresnel reflectance `F(wo·h)` of a configuration, which chooses between the lobes.
     #[inline]
-    fn value(&self, wo: Vec3, wi: Vec3, c: &Configuration, d: f32) -> f32 {
+    fn fresnel(&self, wo: Vec3, c: &Configuration) -> f32 {
+        dielectric(wo.dot(c.h), self.eta)
+    }
+
+    /// `f` for a configuration, with `d = D(h)` and, for reflection, `f_wo = F(wo·h)`
+    /// (refraction uses the two-cosine Fresnel term instead and ignores it).
+    #[inline]
+    fn value(&self, wo: Vec3, wi: Vec3, c: &Configuration, d: f32, f_wo: f32) -> f32 {
         if d == 0.0 {
             return 0.0;
         }
         let (woh, wih) = (wo.dot(c.h), wi.dot(c.h));
         let g = self.masking.g2(&self.distribution, wo, wi, c.h);
         if c.reflection {
-            (dielectric(woh, self.eta) * d * g / (4.0 * wo.z * wi.z))
-                .abs()
-                .min(f32::MAX)
+            (f_wo * d * g / (4.0 * wo.z * wi.z)).abs().min(f32::MAX)
         } else {
             // Fresnel from both cosines: symmetric in wo and wi, so f is reciprocal to
             // round-off even at the critical angle, where Snell's cos θt cancels.
@@ -154,11 +159,10 @@ impl<D: NormalDistribution> RoughDielectric<D> {
         }
     }
 
-    /// The density of a configuration, with `d = D(h)`.
+    /// The density of a configuration, with `d = D(h)` and `f = F(wo·h)`.
     #[inline]
-    fn density(&self, wo: Vec3, wi: Vec3, c: &Configuration, d: f32) -> f32 {
+    fn density(&self, wo: Vec3, wi: Vec3, c: &Configuration, d: f32, f: f32) -> f32 {
         let woh = wo.dot(c.h);
-        let f = dielectric(woh, self.eta);
         let pdf_h = self.distribution.pdf_given_d(wo, c.h, d);
         if c.reflection {
             pdf_h * f / (4.0 * woh.abs())
@@ -185,8 +189,14 @@ impl<D: NormalDistribution> Bxdf for RoughDielectric<D> {
 
     #[inline]
     fn eval(&self, wo: Vec3, wi: Vec3) -> f32 {
-        self.configuration(wo, wi)
-            .map_or(0.0, |c| self.value(wo, wi, &c, self.distribution.d(c.h)))
+        self.configuration(wo, wi).map_or(0.0, |c| {
+            let f_wo = if c.reflection {
+                self.fresnel(wo, &c)
+            } else {
+                0.0
+            };
+            self.value(wo, wi, &c, self.distribution.d(c.h), f_wo)
+        })
     }
 
     fn sample(&self, wo: Vec3, u: Vec2, uc: f32) -> Option<BxdfSample<f32>> {
@@ -205,9 +215,9 @@ impl<D: NormalDistribution> Bxdf for RoughDielectric<D> {
         if c.reflection != (uc < f) {
             return None;
         }
-        // D once, for both the value and the density.
-        let d = self.distribution.d(c.h);
-        let pdf = self.density(wo, wi, &c, d);
+        // D and F(wo·h) once, for both the value and the density.
+        let (d, f_wo) = (self.distribution.d(c.h), self.fresnel(wo, &c));
+        let pdf = self.density(wo, wi, &c, d, f_wo);
         if !(pdf > 0.0 && pdf.is_finite()) {
             return None;
         }
@@ -218,7 +228,7 @@ impl<D: NormalDistribution> Bxdf for RoughDielectric<D> {
         };
         Some(BxdfSample {
             wi,
-            f: self.value(wo, wi, &c, d),
+            f: self.value(wo, wi, &c, d, f_wo),
             pdf,
             lobe,
             eta,
@@ -227,8 +237,9 @@ impl<D: NormalDistribution> Bxdf for RoughDielectric<D> {
 
     #[inline]
     fn pdf(&self, wo: Vec3, wi: Vec3) -> f32 {
-        self.configuration(wo, wi)
-            .map_or(0.0, |c| self.density(wo, wi, &c, self.distribution.d(c.h)))
+        self.configuration(wo, wi).map_or(0.0, |c| {
+            self.density(wo, wi, &c, self.distribution.d(c.h), self.fresnel(wo, &c))
+        })
     }
 
     #[inline]
