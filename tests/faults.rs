@@ -18,13 +18,17 @@ use core::f32::consts::PI;
 use lobe::bxdf::{Bxdf, BxdfSample, Lambert, Lobes, Microfacet, RoughDielectric, TransportMode};
 use lobe::frame::reflect;
 use lobe::fresnel::{self, Fresnel, Schlick};
-use lobe::microfacet::{Ggx, Masking, NormalDistribution, VisibleNormals};
+use lobe::microfacet::{Ggx, Masking, NormalDistribution};
 use lobe::sampling::{cosine_hemisphere, cosine_hemisphere_pdf};
 use lobe::verify::{
     Chi2Config, Config, Law, NdfCheck, NdfConfig, Report, albedo, check_bxdf, check_ndf, chi2_bxdf,
     sidak,
 };
 use lobe::{Alpha, Eta, Vec2, Vec3};
+
+mod common;
+
+use common::buggy_ggx::{BuggyNdf, NdfBug};
 
 // ---------------------------------------------------------------------------------------
 // Budgets
@@ -112,82 +116,10 @@ fn glossy(a: f32) -> Microfacet<Ggx, Schlick> {
 // Broken distributions (checked with `check_ndf`)
 // ---------------------------------------------------------------------------------------
 
-/// The distribution bugs, each a one-line slip away from GGX.
-#[derive(Clone, Copy, PartialEq, Debug)]
-enum NdfBug {
-    None,
-    /// `D` without its `1/π`.
-    DMissingPi,
-    /// `G1 = 1/(1/Λ)` (that is `Λ`) instead of `1/(1 + Λ)`.
-    G1IsLambda,
-    /// The visible-normal density without `G1`: `max(0, w·m) D(m) / cos θw`.
-    VisibleWithoutG1,
-    /// The sampler draws visible normals but `pdf` still claims the old `D(m) cos θm`.
-    VisibleSamplerDcosPdf,
-}
-
-/// GGX with one bug. As in a real implementation, the derived quantities are built from the
-/// (possibly broken) parts: `d_visible` from `g1` and `d`, the sampler's `pdf` from
-/// `d_visible`, so a bug propagates wherever the code would carry it.
-struct BuggyNdf {
-    ggx: Ggx,
-    bug: NdfBug,
-}
-
-impl NormalDistribution for BuggyNdf {
-    fn d(&self, m: Vec3) -> f32 {
-        let d = self.ggx.d(m);
-        if self.bug == NdfBug::DMissingPi {
-            d * PI
-        } else {
-            d
-        }
-    }
-    fn lambda(&self, w: Vec3) -> f32 {
-        self.ggx.lambda(w)
-    }
-    fn g1(&self, w: Vec3) -> f32 {
-        if self.bug == NdfBug::G1IsLambda {
-            1.0 / (1.0 / self.lambda(w))
-        } else {
-            1.0 / (1.0 + self.lambda(w))
-        }
-    }
-    fn d_visible(&self, w: Vec3, m: Vec3) -> f32 {
-        let w = lobe::microfacet::upper(w);
-        let wm = w.dot(m);
-        if !(w.z > 0.0 && wm > 0.0) {
-            return 0.0;
-        }
-        let g1 = if self.bug == NdfBug::VisibleWithoutG1 {
-            1.0
-        } else {
-            self.g1(w)
-        };
-        g1 / w.z * wm * self.d(m)
-    }
-    fn sample(&self, w: Vec3, u: Vec2) -> Vec3 {
-        self.ggx.sample_visible(w, u)
-    }
-    fn pdf(&self, w: Vec3, m: Vec3) -> f32 {
-        if self.bug == NdfBug::VisibleSamplerDcosPdf {
-            self.pdf_d_cos(m)
-        } else {
-            self.d_visible(w, m)
-        }
-    }
-    fn sample_d_cos(&self, u: Vec2) -> Vec3 {
-        self.ggx.sample_d_cos(u)
-    }
-}
-
 const NDF_ALPHA: f32 = 0.3;
 
 fn buggy_ndf(bug: NdfBug) -> Report {
-    let dist = BuggyNdf {
-        ggx: Ggx::isotropic(alpha(NDF_ALPHA)),
-        bug,
-    };
+    let dist = BuggyNdf::new(NDF_ALPHA, bug);
     check_ndf(
         &format!("GGX α=0.3, {bug:?}"),
         &dist,
@@ -426,12 +358,21 @@ impl BuggyGlossy {
         (wo + wi).normalize()
     }
 
+    /// The density of the reflection sampler's normal `m` for `wo`, without the Jacobian.
+    fn sampler_density(&self, wo: Vec3, m: Vec3) -> f32 {
+        if self.dist().bounded_reflection() {
+            self.dist().d_visible_bounded(wo, m)
+        } else {
+            self.dist().d_visible(wo, m)
+        }
+    }
+
     /// The density of the microfacet normal of `(wo, wi)`, without the Jacobian.
     fn normal_density(&self, wo: Vec3, wi: Vec3) -> f32 {
         if !(wo.z > 0.0 && wi.z > 0.0) {
             return 0.0;
         }
-        self.dist().pdf_reflection(wo, Self::half(wo, wi))
+        self.sampler_density(wo, Self::half(wo, wi))
     }
 }
 
@@ -475,10 +416,10 @@ impl Bxdf for BuggyGlossy {
                 if !(wo.z > 0.0) {
                     return None;
                 }
-                let m = self.dist().sample_reflection(wo, u);
+                let m = self.dist().sample_reflection(&self.dist().view(wo), u);
                 let wi = reflect(wo, m);
                 // Missing: `if !(wi.z > 0.0) { return None; }`
-                let pdf = self.dist().pdf_reflection(wo, m) / (4.0 * wo.dot(m));
+                let pdf = self.sampler_density(wo, m) / (4.0 * wo.dot(m));
                 (pdf > 0.0 && pdf.is_finite()).then(|| BxdfSample {
                     wi,
                     f: self.good.eval(wo, wi),
@@ -937,10 +878,7 @@ fn transmission_without_eta_squared_fails_generalised_reciprocity() {
 fn correct_counterparts_pass_every_law() {
     let report = check_ndf(
         "GGX α=0.3",
-        &BuggyNdf {
-            ggx: Ggx::isotropic(alpha(NDF_ALPHA)),
-            bug: NdfBug::None,
-        },
+        &BuggyNdf::new(NDF_ALPHA, NdfBug::None),
         &ndf_config(NDF_ALPHA),
     );
     assert_caught(&report, &[]);

@@ -7,7 +7,7 @@ mod common;
 
 use common::{dir, k_sigma};
 use lobe::microfacet::{
-    Beckmann, BeckmannMasking, BlinnPhongNdf, Ggx, Gtr, NormalDistribution, VisibleNormals,
+    Beckmann, BeckmannMasking, BlinnPhongNdf, Ggx, Gtr, NormalDistribution, SampleDCos,
 };
 use lobe::verify::{
     Chi2Config, Estimate, NdfCheck, chi2_normals, d_normalization, projected_area,
@@ -291,7 +291,7 @@ fn samplers_pass_chi_square() {
                 let w = dir(theta, PHI);
                 run(
                     format!("GGX visible α=({ax}, {ay}) θ={theta}"),
-                    &|u| ggx.sample_visible(w, u),
+                    &|u| ggx.sample(&ggx.view(w), u),
                     &|m| f64::from(ggx.d_visible(w, m)),
                     (ax, ay),
                 );
@@ -303,7 +303,7 @@ fn samplers_pass_chi_square() {
                 );
                 run(
                     format!("Beckmann visible α=({ax}, {ay}) θ={theta}"),
-                    &|u| beckmann.sample_visible(w, u),
+                    &|u| beckmann.sample(&beckmann.view(w), u),
                     &|m| f64::from(beckmann.d_visible(w, m)),
                     (ax, ay),
                 );
@@ -355,7 +355,7 @@ fn bounded_sampler_loses_fewer_samples_below_the_horizon() {
             for _ in 0..n {
                 let u = rng.next_vec2();
                 let below = |m: Vec3| lobe::frame::reflect(wo, m).z <= 0.0;
-                lost_vndf += usize::from(below(ggx.sample_visible(wo, u)));
+                lost_vndf += usize::from(below(ggx.sample(&ggx.view(wo), u)));
                 lost_bounded += usize::from(below(ggx.sample_visible_bounded(wo, u)));
             }
             let (fv, fb) = (lost_vndf as f64 / n as f64, lost_bounded as f64 / n as f64);

@@ -6,7 +6,7 @@
 mod common;
 
 use lobe::microfacet::{
-    Beckmann, BeckmannMasking, BlinnPhongNdf, Ggx, Gtr, NormalDistribution, VisibleNormals,
+    Beckmann, BeckmannMasking, BlinnPhongNdf, Ggx, Gtr, NormalDistribution, SampleDCos,
 };
 use lobe::{Alpha, Vec2, Vec3};
 use proptest::prelude::*;
@@ -36,7 +36,7 @@ fn alpha() -> impl Strategy<Value = f32> {
 }
 
 /// A distribution with exact Smith masking, chosen by `kind`.
-fn exact(kind: u8, ax: f32, ay: f32, gamma: f32) -> Box<dyn NormalDistribution> {
+fn exact(kind: u8, ax: f32, ay: f32, gamma: f32) -> Box<dyn SampleDCos> {
     let (ax, ay) = (Alpha::new(ax).unwrap(), Alpha::new(ay).unwrap());
     match kind % 4 {
         0 => Box::new(Ggx::new(ax, ay)),
@@ -98,20 +98,22 @@ proptest! {
         kind in 0u8..5, ax in alpha(), ay in alpha(), gamma in 0.1f32..10.0,
         w in direction(), m in direction(), u in (0.0f32..1.0, 0.0f32..1.0),
     ) {
-        let d: Box<dyn NormalDistribution> = if kind == 4 {
+        let d: Box<dyn SampleDCos> = if kind == 4 {
             let (ax, ay) = (Alpha::new(ax).unwrap(), Alpha::new(ay).unwrap());
             Box::new(Beckmann::new(ax, ay).with_masking(BeckmannMasking::WalterRational))
         } else {
             exact(kind, ax, ay, gamma)
         };
         let u = Vec2::new(u.0, u.1);
+        let view = d.view(w);
         for (name, v) in [
             ("D", d.d(m)),
             ("G1", d.g1(w)),
             ("G2", d.g2(w, m)),
             ("G2 separable", d.g2_separable(w, m)),
             ("D_w", d.d_visible(w, m)),
-            ("pdf", d.pdf(w, m)),
+            ("pdf", d.pdf(&view, m, d.d(m))),
+            ("pdf reflection", d.pdf_reflection(&view, m, d.d(m))),
             ("pdf D cos", d.pdf_d_cos(m)),
         ] {
             prop_assert!(v.is_finite() && v >= 0.0, "{name} = {v} for w = {w:?}, m = {m:?}");
@@ -120,7 +122,11 @@ proptest! {
         if m.z <= 0.0 {
             prop_assert_eq!(d.d(m), 0.0);
         }
-        for (name, s) in [("sample", d.sample(w, u)), ("sample_d_cos", d.sample_d_cos(u))] {
+        for (name, s) in [
+            ("sample", d.sample(&view, u)),
+            ("sample_reflection", d.sample_reflection(&view, u)),
+            ("sample_d_cos", d.sample_d_cos(u)),
+        ] {
             prop_assert!(s.is_finite() && (s.length() - 1.0).abs() < 1e-4 && s.z >= 0.0,
                 "{name} gave {s:?} for w = {w:?}, u = {u:?}");
         }
@@ -134,7 +140,12 @@ proptest! {
         let (ax, ay) = (Alpha::new(ax).unwrap(), Alpha::new(ay).unwrap());
         let u = Vec2::new(u.0, u.1);
         let ggx = Ggx::new(ax, ay);
-        let m = if beckmann { Beckmann::new(ax, ay).sample_visible(w, u) } else { ggx.sample_visible(w, u) };
+        let m = if beckmann {
+            let b = Beckmann::new(ax, ay);
+            b.sample(&b.view(w), u)
+        } else {
+            ggx.sample(&ggx.view(w), u)
+        };
         prop_assert!(m.is_finite() && (m.length() - 1.0).abs() < 1e-4 && m.z >= 0.0, "{m:?}");
         let b = ggx.sample_visible_bounded(w, u);
         prop_assert!(b.is_finite() && (b.length() - 1.0).abs() < 1e-4 && b.z >= 0.0, "{b:?}");

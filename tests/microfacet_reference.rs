@@ -20,7 +20,7 @@
 //! | `smith_g1(v, m)` | `0` if `(v·m)·v.z ≤ 0`, else [`g1(v)`](NormalDistribution::g1) (which is `1` at normal incidence, as Mitsuba's special case) |
 //! | `G(wi, wo, m)` | [`g2_separable`](NormalDistribution::g2_separable) times both orientation factors `χ⁺((v·m)·v.z)` |
 //! | `pdf(wi, m)`, `sample_visible = true` | [`d_visible(wi, m)`](NormalDistribution::d_visible) for `wi.z > 0`; `−d_visible(−wi, m)` for `wi.z < 0` |
-//! | `pdf(wi, m)`, `sample_visible = false` | [`pdf_d_cos(m)`](NormalDistribution::pdf_d_cos) `= D(m)·max(0, m.z)` |
+//! | `pdf(wi, m)`, `sample_visible = false` | `D(m)·max(0, m.z)`, the density of [`SampleDCos`](lobe::microfacet::SampleDCos) |
 //!
 //! Mitsuba's visible pdf `D·smith_g1(wi, m)·|wi·m|/wi.z` is negative for `wi.z < 0`
 //! (CONVENTIONS §6), whereas lobe's `d_visible` mirrors `wi` to the upper hemisphere. With
@@ -53,7 +53,7 @@ mod common;
 
 use common::reference::{Dev, field, field32, load, vec_field};
 
-use lobe::microfacet::{Beckmann, BeckmannMasking, Ggx, NormalDistribution, VisibleNormals};
+use lobe::microfacet::{Beckmann, BeckmannMasking, Ggx, NormalDistribution, Sampling, View};
 use lobe::{Alpha, Vec2, Vec3};
 use serde_json::Value;
 
@@ -184,7 +184,7 @@ fn mitsuba_values<N: NormalDistribution + ?Sized>(n: &N, r: &Value, o: Orientati
         g1_wo,
         g,
         visible_pdf(n, wi, m),
-        n.pdf_d_cos(m),
+        n.d(m) * m.z.max(0.0),
     ]
     .map(f64::from)
 }
@@ -367,8 +367,14 @@ struct SampleOutcome {
     own_pdf: f32,
 }
 
-fn sample_outcome<N: VisibleNormals>(n: &N, wi: Vec3, m_mitsuba: Vec3, u: Vec2) -> SampleOutcome {
-    let own_m = n.sample_visible(wi, u);
+fn sample_outcome<N: NormalDistribution>(
+    n: &N,
+    wi: Vec3,
+    m_mitsuba: Vec3,
+    u: Vec2,
+) -> SampleOutcome {
+    assert_eq!(n.sampling(), Sampling::VisibleNormals);
+    let own_m = n.sample(&n.view(wi), u);
     SampleOutcome {
         pdf_at_mitsuba_m: visible_pdf(n, wi, m_mitsuba),
         own_m,
@@ -442,6 +448,9 @@ struct ScaledD<N> {
 }
 
 impl<N: NormalDistribution> NormalDistribution for ScaledD<N> {
+    fn sampling(&self) -> Sampling {
+        self.inner.sampling()
+    }
     fn d(&self, m: Vec3) -> f32 {
         self.scale * self.inner.d(m)
     }
@@ -451,20 +460,11 @@ impl<N: NormalDistribution> NormalDistribution for ScaledD<N> {
     fn g1(&self, w: Vec3) -> f32 {
         self.inner.g1(w)
     }
-    fn sample(&self, w: Vec3, u: Vec2) -> Vec3 {
-        self.inner.sample(w, u)
+    fn view(&self, w: Vec3) -> View {
+        self.inner.view(w)
     }
-    fn pdf(&self, w: Vec3, m: Vec3) -> f32 {
-        self.d_visible(w, m)
-    }
-    fn sample_d_cos(&self, u: Vec2) -> Vec3 {
-        self.inner.sample_d_cos(u)
-    }
-}
-
-impl<N: VisibleNormals> VisibleNormals for ScaledD<N> {
-    fn sample_visible(&self, w: Vec3, u: Vec2) -> Vec3 {
-        self.inner.sample_visible(w, u)
+    fn sample(&self, view: &View, u: Vec2) -> Vec3 {
+        self.inner.sample(view, u)
     }
 }
 

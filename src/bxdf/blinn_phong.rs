@@ -3,7 +3,7 @@
 use super::diffuse_glossy::{
     check_exponent, check_sum, cos_power_norm, diffuse_probability, weighted_lobes,
 };
-use super::{Bxdf, BxdfSample, Lobes, both_above};
+use super::{BxdfSample, Lobes, Prepare, both_above};
 use crate::frame::reflect;
 use crate::math::{cos_pow, exp, sqrt};
 use crate::param::ParamError;
@@ -75,7 +75,7 @@ pub enum BlinnPhongForm {
 /// model) the diffuse lobe, cosine-weighted; otherwise the half vector `h` with density
 /// `(p + 1)/(2π) (n·h)^p` and `wi = reflect(wo, h)`, whose density is that over
 /// `4 (wo·h)`. A reflected direction below the horizon is the sampler's missing mass:
-/// `sample` returns `None`. [`Bxdf::pdf`] is the mixture of the two densities and a sample's
+/// `sample` returns `None`. [`Bxdf::pdf`](super::Bxdf::pdf) is the mixture of the two densities and a sample's
 /// `f` the whole BRDF.
 ///
 /// **Precision.** `(n·h)^p` is computed as `exp(p/2 · ln(1 − sin² θh))` from
@@ -232,11 +232,17 @@ fn lobe_factor(form: BlinnPhongForm, p: f32) -> f32 {
     }
 }
 
-impl<S: Spectrum> Bxdf for BlinnPhong<S> {
+impl<S: Spectrum> Prepare for BlinnPhong<S> {
     type Spectrum = S;
+    type Prepared = Vec3;
 
     #[inline]
-    fn eval(&self, wo: Vec3, wi: Vec3) -> S {
+    fn prepare(&self, wo: Vec3) -> Vec3 {
+        wo
+    }
+
+    #[inline]
+    fn eval_prepared(&self, &wo: &Vec3, wi: Vec3) -> S {
         if both_above(wo, wi) {
             self.value(self.lobe(wo, wi).0)
         } else {
@@ -245,7 +251,7 @@ impl<S: Spectrum> Bxdf for BlinnPhong<S> {
     }
 
     #[inline]
-    fn sample(&self, wo: Vec3, u: Vec2, uc: f32) -> Option<BxdfSample<S>> {
+    fn sample_prepared(&self, &wo: &Vec3, u: Vec2, uc: f32) -> Option<BxdfSample<S>> {
         if !(wo.z > 0.0) {
             return None;
         }
@@ -275,12 +281,23 @@ impl<S: Spectrum> Bxdf for BlinnPhong<S> {
     }
 
     #[inline]
-    fn pdf(&self, wo: Vec3, wi: Vec3) -> f32 {
+    fn pdf_prepared(&self, &wo: &Vec3, wi: Vec3) -> f32 {
         if both_above(wo, wi) {
             let (cos_pow, len) = self.lobe(wo, wi);
             self.density(wi.z, cos_pow, len)
         } else {
             0.0
+        }
+    }
+
+    #[inline]
+    fn eval_pdf_prepared(&self, &wo: &Vec3, wi: Vec3) -> (S, f32) {
+        if both_above(wo, wi) {
+            // One evaluation of the lobe serves both.
+            let (cos_pow, len) = self.lobe(wo, wi);
+            (self.value(cos_pow), self.density(wi.z, cos_pow, len))
+        } else {
+            (S::zero(), 0.0)
         }
     }
 

@@ -1,11 +1,11 @@
 //! Burley's Disney diffuse BRDF.
 
-use super::{Bxdf, BxdfSample, Lobes, both_above, pdf_cosine, sample_cosine};
+use super::CosineSampled;
 use crate::math::pow5;
 use crate::param::{ParamError, Roughness};
 use crate::spectrum::Spectrum;
 use core::f32::consts::FRAC_1_PI;
-use glam::{Vec2, Vec3};
+use glam::Vec3;
 
 /// The diffuse lobe of the Disney "principled" BRDF:
 ///
@@ -34,7 +34,7 @@ use glam::{Vec2, Vec3};
 /// Reciprocal (exactly: the formula is symmetric term by term, measured error 0) and
 /// positive. **Not energy-conserving** (ERRATA #11): the factors are not normalised, so the
 /// directional albedo with `ρ = 1` is below 1 for smooth surfaces and above it for rough
-/// ones. Measured by quadrature of [`Bxdf::eval`] (`tests/bxdf_disney_diffuse.rs`; agrees with
+/// ones. Measured by quadrature of [`Bxdf::eval`](super::Bxdf::eval) (`tests/bxdf_disney_diffuse.rs`; agrees with
 /// an independent evaluation to 1e-6):
 ///
 /// | r | θo = 0° | 30° | 60° | 80° | 85° | 89° | → 90° | max over θo |
@@ -93,8 +93,11 @@ impl<S: Spectrum> DisneyDiffuse<S> {
     pub fn roughness(&self) -> Roughness {
         self.roughness
     }
+}
 
-    /// `f` for `wo`, `wi` known to be above the surface.
+impl<S: Spectrum> CosineSampled for DisneyDiffuse<S> {
+    type Spectrum = S;
+
     #[inline]
     fn value(&self, wo: Vec3, wi: Vec3) -> S {
         // cos²θd = (wi·h)² = (1 + wi·wo)/2 for unit vectors.
@@ -103,33 +106,5 @@ impl<S: Spectrum> DisneyDiffuse<S> {
         let light = 1.0 + fd90_m1 * pow5(1.0 - wi.z.min(1.0));
         let view = 1.0 + fd90_m1 * pow5(1.0 - wo.z.min(1.0));
         self.reflectance * (light * view * FRAC_1_PI)
-    }
-}
-
-impl<S: Spectrum> Bxdf for DisneyDiffuse<S> {
-    type Spectrum = S;
-
-    #[inline]
-    fn eval(&self, wo: Vec3, wi: Vec3) -> S {
-        if both_above(wo, wi) {
-            self.value(wo, wi)
-        } else {
-            S::zero()
-        }
-    }
-
-    #[inline]
-    fn sample(&self, wo: Vec3, u: Vec2, _uc: f32) -> Option<BxdfSample<S>> {
-        sample_cosine(wo, u, |wi| self.value(wo, wi))
-    }
-
-    #[inline]
-    fn pdf(&self, wo: Vec3, wi: Vec3) -> f32 {
-        pdf_cosine(wo, wi)
-    }
-
-    #[inline]
-    fn lobes(&self) -> Lobes {
-        Lobes::DIFFUSE_REFLECTION
     }
 }

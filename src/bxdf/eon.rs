@@ -1,10 +1,10 @@
 //! The energy-preserving Oren-Nayar rough diffuse BRDF (EON).
 
-use super::{Bxdf, BxdfSample, Lobes, both_above, pdf_cosine, sample_cosine};
+use super::CosineSampled;
 use crate::param::ParamError;
 use crate::spectrum::Spectrum;
 use core::f32::consts::{FRAC_1_PI, PI};
-use glam::{Vec2, Vec3};
+use glam::Vec3;
 
 /// `1/2 − 2/(3π)`: the FON normalisation constant, `A_F = 1/(1 + C1 r)`, and also `G(0)/π`.
 const C1: f32 = 0.5 - 2.0 / (3.0 * PI);
@@ -66,7 +66,7 @@ const G_FIT: [f32; 4] = [
 /// Reciprocal (exactly: every term is symmetric in `wo`, `wi`; measured error 0) and
 /// positive. **Energy**: the directional albedo is `ρ E_F(μo) + ρ_ms (1 − E_F(μo))` (see
 /// [`albedo`](Self::albedo)), exactly `1` for `ρ = 1` when `E_F` is exact. Measured by
-/// quadrature of [`Bxdf::eval`] with `ρ = 1` over `θo ∈ [0°, 89°]` (`tests/bxdf_eon.rs`):
+/// quadrature of [`Bxdf::eval`](super::Bxdf::eval) with `ρ = 1` over `θo ∈ [0°, 89°]` (`tests/bxdf_eon.rs`):
 ///
 /// | `r` | fitted `E_F`: max \|albedo − 1\| | at θo | exact `E_F`: max \|albedo − 1\| |
 /// | --- | --- | --- | --- |
@@ -170,7 +170,7 @@ impl<S: Spectrum> EnergyPreservingOrenNayar<S> {
     /// The directional albedo for a viewer at `cos θo`: `ρ E_F(μo) + ρ_ms (1 − E_F(μo))`
     /// (the paper's `E_EON`), with `E_F` fitted or exact as the model evaluates it; zero for
     /// `cos θo ≤ 0` or NaN. Exact for the exact model; for the fitted one it differs from
-    /// the integral of [`Bxdf::eval`] by the fit's error (at most `5.4e-4` for `ρ = 1`).
+    /// the integral of [`Bxdf::eval`](super::Bxdf::eval) by the fit's error (at most `5.4e-4` for `ρ = 1`).
     #[must_use]
     pub fn albedo(&self, cos_theta_o: f32) -> S {
         if !(cos_theta_o > 0.0) {
@@ -196,24 +196,6 @@ impl<S: Spectrum> EnergyPreservingOrenNayar<S> {
         };
         (C1 - g_over_pi).max(0.0)
     }
-
-    /// `f` for `wo`, `wi` known to be above the surface.
-    #[inline]
-    fn value(&self, wo: Vec3, wi: Vec3) -> S {
-        // s = wi·wo − μi μo = wi.xy·wo.xy for unit vectors, without the cancellation.
-        let s = wo.x * wi.x + wo.y * wi.y;
-        let s_over_t = if s > 0.0 {
-            s / wo.z.max(wi.z).max(f32::MIN_POSITIVE)
-        } else {
-            s
-        };
-        // 1 + r s ≥ 0 for s ≥ −1 and r ≤ 1; the clamp absorbs round-off.
-        let single = (1.0 + self.roughness * s_over_t).max(0.0);
-        // The product of the two directions' factors first, so that f(wo, wi) and
-        // f(wi, wo) round identically.
-        let ms = self.compensation(wo.z) * self.compensation(wi.z);
-        self.single * single + self.multi * ms
-    }
 }
 
 /// `ρ_ms = ρ² Ē_F / (1 − ρ (1 − Ē_F))` per channel, with `Ē_F = (1 + C2 r)/(1 + C1 r)` and
@@ -235,30 +217,23 @@ fn g_exact_over_pi(mu: f32) -> f32 {
     (sin * (theta - sin * mu) + (2.0 / 3.0) * sin * (tail - 1.0)) * FRAC_1_PI
 }
 
-impl<S: Spectrum> Bxdf for EnergyPreservingOrenNayar<S> {
+impl<S: Spectrum> CosineSampled for EnergyPreservingOrenNayar<S> {
     type Spectrum = S;
 
     #[inline]
-    fn eval(&self, wo: Vec3, wi: Vec3) -> S {
-        if both_above(wo, wi) {
-            self.value(wo, wi)
+    fn value(&self, wo: Vec3, wi: Vec3) -> S {
+        // s = wi·wo − μi μo = wi.xy·wo.xy for unit vectors, without the cancellation.
+        let s = wo.x * wi.x + wo.y * wi.y;
+        let s_over_t = if s > 0.0 {
+            s / wo.z.max(wi.z).max(f32::MIN_POSITIVE)
         } else {
-            S::zero()
-        }
-    }
-
-    #[inline]
-    fn sample(&self, wo: Vec3, u: Vec2, _uc: f32) -> Option<BxdfSample<S>> {
-        sample_cosine(wo, u, |wi| self.value(wo, wi))
-    }
-
-    #[inline]
-    fn pdf(&self, wo: Vec3, wi: Vec3) -> f32 {
-        pdf_cosine(wo, wi)
-    }
-
-    #[inline]
-    fn lobes(&self) -> Lobes {
-        Lobes::DIFFUSE_REFLECTION
+            s
+        };
+        // 1 + r s ≥ 0 for s ≥ −1 and r ≤ 1; the clamp absorbs round-off.
+        let single = (1.0 + self.roughness * s_over_t).max(0.0);
+        // The product of the two directions' factors first, so that f(wo, wi) and
+        // f(wi, wo) round identically.
+        let ms = self.compensation(wo.z) * self.compensation(wi.z);
+        self.single * single + self.multi * ms
     }
 }

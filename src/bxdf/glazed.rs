@@ -1,6 +1,6 @@
 //! The handouts' glazed material: a diffuse base under a smooth dielectric coat.
 
-use super::{Bxdf, BxdfSample, Lobes, both_above, delta_scale};
+use super::{At, BxdfSample, Lobes, Prepare, both_above, delta_scale};
 use crate::fresnel::dielectric;
 use crate::param::{Eta, ParamError, unit_interval};
 use crate::sampling::{cosine_hemisphere, cosine_hemisphere_pdf};
@@ -88,23 +88,34 @@ pub(crate) fn cosine_weighted_average(g: impl Fn(f32) -> f32) -> f32 {
         .sum()
 }
 
-impl<S: Spectrum> Bxdf for Glazed<S> {
+impl<S: Spectrum> Prepare for Glazed<S> {
     type Spectrum = S;
+    /// `wo` with the probability of the mirror lobe and the coat's `F(cos θo)`.
+    type Prepared = At<(f32, f32)>;
 
     #[inline]
-    fn eval(&self, wo: Vec3, wi: Vec3) -> S {
-        if !both_above(wo, wi) {
+    fn prepare(&self, wo: Vec3) -> Self::Prepared {
+        At {
+            wo,
+            state: self.mirror_probability(wo),
+        }
+    }
+
+    #[inline]
+    fn eval_prepared(&self, at: &Self::Prepared, wi: Vec3) -> S {
+        if !both_above(at.wo, wi) {
             return S::zero();
         }
-        let t = (1.0 - dielectric(wo.z, self.eta)) * (1.0 - dielectric(wi.z, self.eta));
+        let t = (1.0 - at.state.1) * (1.0 - dielectric(wi.z, self.eta));
         self.reflectance * (t * self.diffuse_scale)
     }
 
-    fn sample(&self, wo: Vec3, u: Vec2, uc: f32) -> Option<BxdfSample<S>> {
+    fn sample_prepared(&self, at: &Self::Prepared, u: Vec2, uc: f32) -> Option<BxdfSample<S>> {
+        let wo = at.wo;
         if !(wo.z > 0.0) {
             return None;
         }
-        let (p_mirror, f) = self.mirror_probability(wo);
+        let (p_mirror, f) = at.state;
         if uc < p_mirror {
             let wi = Vec3::new(-wo.x, -wo.y, wo.z);
             return Some(BxdfSample {
@@ -131,11 +142,11 @@ impl<S: Spectrum> Bxdf for Glazed<S> {
     }
 
     #[inline]
-    fn pdf(&self, wo: Vec3, wi: Vec3) -> f32 {
-        if !both_above(wo, wi) {
+    fn pdf_prepared(&self, at: &Self::Prepared, wi: Vec3) -> f32 {
+        if !both_above(at.wo, wi) {
             return 0.0;
         }
-        (1.0 - self.mirror_probability(wo).0) * cosine_hemisphere_pdf(wi.z)
+        (1.0 - at.state.0) * cosine_hemisphere_pdf(wi.z)
     }
 
     #[inline]

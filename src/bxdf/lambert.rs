@@ -1,10 +1,10 @@
 //! The Lambertian (ideal diffuse) BRDF.
 
-use super::{Bxdf, BxdfSample, Lobes, both_above, pdf_cosine, sample_cosine};
+use super::CosineSampled;
 use crate::param::ParamError;
 use crate::spectrum::Spectrum;
 use core::f32::consts::FRAC_1_PI;
-use glam::{Vec2, Vec3};
+use glam::Vec3;
 
 /// Lambert's ideal diffuse reflector: `f = ρ / π` for `wo`, `wi` above the surface.
 ///
@@ -47,30 +47,11 @@ impl<S: Spectrum> Lambert<S> {
     }
 }
 
-impl<S: Spectrum> Bxdf for Lambert<S> {
+impl<S: Spectrum> CosineSampled for Lambert<S> {
     type Spectrum = S;
 
     #[inline]
-    fn eval(&self, wo: Vec3, wi: Vec3) -> S {
-        if both_above(wo, wi) {
-            self.reflectance * FRAC_1_PI
-        } else {
-            S::zero()
-        }
-    }
-
-    #[inline]
-    fn sample(&self, wo: Vec3, u: Vec2, _uc: f32) -> Option<BxdfSample<S>> {
-        sample_cosine(wo, u, |_| self.reflectance * FRAC_1_PI)
-    }
-
-    #[inline]
-    fn pdf(&self, wo: Vec3, wi: Vec3) -> f32 {
-        pdf_cosine(wo, wi)
-    }
-
-    #[inline]
-    fn lobes(&self) -> Lobes {
-        Lobes::DIFFUSE_REFLECTION
+    fn value(&self, _wo: Vec3, _wi: Vec3) -> S {
+        self.reflectance * FRAC_1_PI
     }
 }

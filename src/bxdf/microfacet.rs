@@ -1,10 +1,10 @@
 //! The Cook-Torrance microfacet reflection model, generic over distribution, masking and
 //! Fresnel term.
 
-use super::{Bxdf, BxdfSample, Lobes, both_above};
+use super::{At, BxdfSample, Lobes, Prepare, both_above};
 use crate::frame::reflect;
 use crate::fresnel::{self, Fresnel};
-use crate::microfacet::{Masking, NormalDistribution};
+use crate::microfacet::{Masking, NormalDistribution, View};
 use crate::spectrum::Spectrum;
 use glam::{Vec2, Vec3};
 
@@ -77,67 +77,89 @@ impl<D: NormalDistribution, F: Fresnel> Microfacet<D, F> {
         &self.distribution
     }
 
-    /// `(f, pdf)` at once for a pair above the surface, with `D` evaluated once: for a model
-    /// that mixes this lobe with another.
-    #[inline]
-    pub(crate) fn value_and_density(&self, wo: Vec3, wi: Vec3) -> (F::Spectrum, f32) {
-        match half_vector(wo, wi).filter(|_| both_above(wo, wi)) {
-            Some(h) => {
-                let d = self.distribution.d(h);
-                (self.value(wo, wi, h, d), self.density(wo, h, d))
-            }
-            None => (F::Spectrum::zero(), 0.0),
-        }
-    }
-
     /// `f` for `wo`, `wi` above the surface, their unit half vector `h` and `d = D(h)`.
     #[inline]
-    fn value(&self, wo: Vec3, wi: Vec3, h: Vec3, d: f32) -> F::Spectrum {
+    fn value(&self, at: &At<View>, wi: Vec3, h: Vec3, d: f32) -> F::Spectrum {
+        let wo = at.wo;
         // A product of cosines that underflows (subnormal cos θ) would divide 0 by 0: the
         // light there is grazing to within 1e-38 and contributes nothing.
         let cos2 = wo.z * wi.z;
         if d == 0.0 || !(cos2 > 0.0) {
             return F::Spectrum::zero();
         }
-        let g = self.masking.g2(&self.distribution, wo, wi, h);
+        let g = self.masking.g2_view(&self.distribution, &at.state, wi, h);
         // Finite even where the V-cavity term keeps G = 1 for a grazing mirror pair of a very
         // narrow lobe, where D / (4 cos θo cos θi) exceeds f32.
         let scale = (d * g / (4.0 * cos2)).min(f32::MAX);
         self.fresnel.eval(wo.dot(h)) * scale
     }
 
-    /// The density of `wi` reflected about the sampled normal `h` (with `d = D(h)`):
-    /// `pdf(m) / (4 wo·h)`.
+    /// The density of `wi` reflected about a normal drawn from the distribution, at their
+    /// half vector `h` with `d = D(h)`: the normal's density times `1/(4 wo·h)`.
     #[inline]
-    fn density(&self, wo: Vec3, h: Vec3, d: f32) -> f32 {
-        let woh = wo.dot(h);
-        if !(woh > 0.0) {
-            return 0.0;
+    fn density(&self, at: &At<View>, h: Vec3, d: f32) -> f32 {
+        self.distribution.pdf_reflection(&at.state, h, d)
+    }
+
+    /// The half vector of a pair above the surface, or `None`.
+    #[inline]
+    fn half_above(at: &At<View>, wi: Vec3) -> Option<Vec3> {
+        if both_above(at.wo, wi) {
+            half_vector(at.wo, wi)
+        } else {
+            None
         }
-        self.distribution.pdf_reflection_given_d(wo, h, d) / (4.0 * woh)
     }
 }
 
-impl<D: NormalDistribution, F: Fresnel> Bxdf for Microfacet<D, F> {
+impl<D: NormalDistribution, F: Fresnel> Prepare for Microfacet<D, F> {
     type Spectrum = F::Spectrum;
+    type Prepared = At<View>;
 
     #[inline]
-    fn eval(&self, wo: Vec3, wi: Vec3) -> F::Spectrum {
-        if !both_above(wo, wi) {
-            return F::Spectrum::zero();
+    fn prepare(&self, wo: Vec3) -> Self::Prepared {
+        At {
+            wo,
+            state: self.distribution.view(wo),
         }
-        match half_vector(wo, wi) {
-            Some(h) => self.value(wo, wi, h, self.distribution.d(h)),
+    }
+
+    #[inline]
+    fn eval_prepared(&self, at: &Self::Prepared, wi: Vec3) -> F::Spectrum {
+        match Self::half_above(at, wi) {
+            Some(h) => self.value(at, wi, h, self.distribution.d(h)),
             None => F::Spectrum::zero(),
         }
     }
 
     #[inline]
-    fn sample(&self, wo: Vec3, u: Vec2, _uc: f32) -> Option<BxdfSample<F::Spectrum>> {
+    fn pdf_prepared(&self, at: &Self::Prepared, wi: Vec3) -> f32 {
+        Self::half_above(at, wi).map_or(0.0, |h| self.density(at, h, self.distribution.d(h)))
+    }
+
+    #[inline]
+    fn eval_pdf_prepared(&self, at: &Self::Prepared, wi: Vec3) -> (F::Spectrum, f32) {
+        match Self::half_above(at, wi) {
+            Some(h) => {
+                let d = self.distribution.d(h);
+                (self.value(at, wi, h, d), self.density(at, h, d))
+            }
+            None => (F::Spectrum::zero(), 0.0),
+        }
+    }
+
+    #[inline]
+    fn sample_prepared(
+        &self,
+        at: &Self::Prepared,
+        u: Vec2,
+        _uc: f32,
+    ) -> Option<BxdfSample<F::Spectrum>> {
+        let wo = at.wo;
         if !(wo.z > 0.0) {
             return None;
         }
-        let m = self.distribution.sample_reflection(wo, u);
+        let m = self.distribution.sample_reflection(&at.state, u);
         let wi = reflect(wo, m);
         if !(wi.z > 0.0) {
             return None;
@@ -148,25 +170,17 @@ impl<D: NormalDistribution, F: Fresnel> Bxdf for Microfacet<D, F> {
         let h = half_vector(wo, wi)?;
         // D once, for both the value and the density.
         let d = self.distribution.d(h);
-        let pdf = self.density(wo, h, d);
+        let pdf = self.density(at, h, d);
         if !(pdf > 0.0 && pdf.is_finite()) {
             return None;
         }
         Some(BxdfSample {
             wi,
-            f: self.value(wo, wi, h, d),
+            f: self.value(at, wi, h, d),
             pdf,
             lobe: Lobes::GLOSSY_REFLECTION,
             eta: 1.0,
         })
-    }
-
-    #[inline]
-    fn pdf(&self, wo: Vec3, wi: Vec3) -> f32 {
-        if !both_above(wo, wi) {
-            return 0.0;
-        }
-        half_vector(wo, wi).map_or(0.0, |h| self.density(wo, h, self.distribution.d(h)))
     }
 
     #[inline]

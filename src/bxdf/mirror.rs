@@ -1,6 +1,6 @@
 //! A perfect mirror: delta reflection, weighted by a Fresnel term.
 
-use super::{Bxdf, BxdfSample, Lobes, delta_scale};
+use super::{BxdfSample, Lobes, Prepare, delta_scale};
 use crate::fresnel::Fresnel;
 use crate::spectrum::Spectrum;
 use glam::{Vec2, Vec3};
@@ -15,8 +15,8 @@ use glam::{Vec2, Vec3};
 /// reflection from metal/glass" slides describe; pbrt-v4 §9.3. Use [`NoFresnel`] for an ideal
 /// mirror, [`Conductor`] for a polished metal.
 ///
-/// A delta lobe: [`eval`](Bxdf::eval) and [`pdf`](Bxdf::pdf) are zero, and
-/// [`sample`](Bxdf::sample) returns the mirror direction with `pdf = 1` and a weight of exactly
+/// A delta lobe: [`eval`](super::Bxdf::eval) and [`pdf`](super::Bxdf::pdf) are zero, and
+/// [`sample`](super::Bxdf::sample) returns the mirror direction with `pdf = 1` and a weight of exactly
 /// `F(cos θo)`. One-sided (`None` for `wo.z ≤ 0`). Laws: positive; its albedo is `F ≤ 1`.
 ///
 /// [`NoFresnel`]: crate::fresnel::NoFresnel
@@ -34,16 +34,22 @@ impl<F: Fresnel> Mirror<F> {
     }
 }
 
-impl<F: Fresnel> Bxdf for Mirror<F> {
+impl<F: Fresnel> Prepare for Mirror<F> {
     type Spectrum = F::Spectrum;
+    type Prepared = Vec3;
 
     #[inline]
-    fn eval(&self, _wo: Vec3, _wi: Vec3) -> F::Spectrum {
+    fn prepare(&self, wo: Vec3) -> Vec3 {
+        wo
+    }
+
+    #[inline]
+    fn eval_prepared(&self, _wo: &Vec3, _wi: Vec3) -> F::Spectrum {
         F::Spectrum::zero()
     }
 
     #[inline]
-    fn sample(&self, wo: Vec3, _u: Vec2, _uc: f32) -> Option<BxdfSample<F::Spectrum>> {
+    fn sample_prepared(&self, &wo: &Vec3, _u: Vec2, _uc: f32) -> Option<BxdfSample<F::Spectrum>> {
         if !(wo.z > 0.0) {
             return None;
         }
@@ -58,7 +64,7 @@ impl<F: Fresnel> Bxdf for Mirror<F> {
     }
 
     #[inline]
-    fn pdf(&self, _wo: Vec3, _wi: Vec3) -> f32 {
+    fn pdf_prepared(&self, _wo: &Vec3, _wi: Vec3) -> f32 {
         0.0
     }
 

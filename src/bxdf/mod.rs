@@ -41,7 +41,7 @@ pub use microfacet::{Microfacet, RoughConductor};
 pub use mirror::Mirror;
 pub use oren_nayar::OrenNayar;
 pub use phong::Phong;
-pub use plastic::Plastic;
+pub use plastic::{Plastic, PlasticState};
 pub use rough_dielectric::RoughDielectric;
 pub use smooth_dielectric::SmoothDielectric;
 pub use thin_dielectric::ThinDielectric;
@@ -208,12 +208,34 @@ impl<S: Spectrum> BxdfSample<S> {
     }
 }
 
+/// What a model keeps about `wo` between [`Prepare::prepare`] and the `*_prepared` calls:
+/// `wo` itself and the model's own state (for a microfacet model, the distribution's
+/// [`View`](crate::microfacet::View) of `wo`). Built only by the models.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct At<V> {
+    pub(crate) wo: Vec3,
+    pub(crate) state: V,
+}
+
+impl<V> At<V> {
+    /// The prepared viewer direction.
+    #[inline]
+    #[must_use]
+    pub fn wo(&self) -> Vec3 {
+        self.wo
+    }
+}
+
 /// A BRDF or BSDF in the local shading frame.
 ///
 /// Implementations are total: for any finite unit `wo`, `wi` and `u ∈ [0, 1)²`, `uc ∈ [0, 1)`,
 /// `eval` is finite and non-negative, `pdf` finite and non-negative, and `sample` returns
 /// either `None` or a sample with a unit `wi`, a finite non-negative `f` and a positive finite
 /// `pdf`.
+///
+/// The crate's models implement [`Prepare`], which gives them this trait; implement it
+/// directly for a model of your own (or implement [`Prepare`], or [`CosineSampled`] for a
+/// diffuse one, and get it).
 pub trait Bxdf {
     /// The carrier of the BSDF's values: `f32`, RGB `Vec3` or four wavelengths `Vec4`.
     type Spectrum: Spectrum;
@@ -236,6 +258,181 @@ pub trait Bxdf {
     /// The kinds of lobe the model has.
     #[must_use]
     fn lobes(&self) -> Lobes;
+}
+
+/// A BSDF that does the work depending on `wo` alone once per shading point.
+///
+/// A renderer evaluates many `wi` against one `wo`: each light, each MIS pair, the BSDF's own
+/// sample. [`prepare`](Self::prepare) computes what depends on `wo` only — for a microfacet
+/// model the distribution's [`View`](crate::microfacet::View) of `wo` (Smith's `Λ(wo)` and
+/// `G1(wo)`, the visible-normal factor, GGX's stretched view and bounded cap) — into a small
+/// `Copy` value, and the `*_prepared` calls reuse it. [`sample_prepared`](Self::sample_prepared)
+/// returns the value and the density from what it computed on the way (one `D`, one half
+/// vector), and [`eval_pdf_prepared`](Self::eval_pdf_prepared) gives a light sample's value
+/// and density for one `D`.
+///
+/// Every type that implements it is a [`Bxdf`] whose `eval(wo, wi)` is
+/// `eval_prepared(&prepare(wo), wi)`, and likewise for `pdf` and `sample`: the same numbers,
+/// bit for bit, whichever way a renderer calls.
+///
+/// ```
+/// use lobe::bxdf::{Bxdf, Microfacet, Prepare};
+/// use lobe::fresnel::Schlick;
+/// use lobe::microfacet::{Ggx, Masking};
+/// use lobe::{Alpha, Vec2, Vec3};
+/// let brdf = Microfacet::new(
+///     Ggx::isotropic(Alpha::new(0.3)?),
+///     Masking::HeightCorrelated,
+///     Schlick::new(Vec3::new(0.95, 0.64, 0.54))?,
+/// );
+/// let wo = Vec3::new(0.0, 0.6, 0.8);
+/// let at = brdf.prepare(wo); // once per shading point
+/// for wi in [Vec3::new(0.0, -0.6, 0.8), Vec3::new(0.28, -0.48, 0.83)] {
+///     let (f, pdf) = brdf.eval_pdf_prepared(&at, wi); // a light sample, one D
+///     assert_eq!((f, pdf), (brdf.eval(wo, wi), brdf.pdf(wo, wi)));
+/// }
+/// let s = brdf.sample_prepared(&at, Vec2::new(0.4, 0.7), 0.5).unwrap();
+/// assert_eq!(s.pdf, brdf.pdf_prepared(&at, s.wi));
+/// # Ok::<(), lobe::ParamError>(())
+/// ```
+pub trait Prepare {
+    /// The carrier of the BSDF's values.
+    type Spectrum: Spectrum;
+
+    /// What the model keeps about `wo`.
+    type Prepared: Copy;
+
+    /// Computes what depends on `wo` alone.
+    #[must_use]
+    fn prepare(&self, wo: Vec3) -> Self::Prepared;
+
+    /// [`Bxdf::eval`] for the prepared `wo`.
+    #[must_use]
+    fn eval_prepared(&self, at: &Self::Prepared, wi: Vec3) -> Self::Spectrum;
+
+    /// [`Bxdf::pdf`] for the prepared `wo`.
+    #[must_use]
+    fn pdf_prepared(&self, at: &Self::Prepared, wi: Vec3) -> f32;
+
+    /// `(eval, pdf)` for the prepared `wo`, sharing their work (a microfacet model evaluates
+    /// `D` once): what a renderer needs for a light sample weighed by MIS.
+    #[inline]
+    #[must_use]
+    fn eval_pdf_prepared(&self, at: &Self::Prepared, wi: Vec3) -> (Self::Spectrum, f32) {
+        (self.eval_prepared(at, wi), self.pdf_prepared(at, wi))
+    }
+
+    /// [`Bxdf::sample`] for the prepared `wo`.
+    #[must_use]
+    fn sample_prepared(
+        &self,
+        at: &Self::Prepared,
+        u: Vec2,
+        uc: f32,
+    ) -> Option<BxdfSample<Self::Spectrum>>;
+
+    /// [`Bxdf::lobes`].
+    #[must_use]
+    fn lobes(&self) -> Lobes;
+}
+
+impl<T: Prepare> Bxdf for T {
+    type Spectrum = T::Spectrum;
+
+    #[inline]
+    fn eval(&self, wo: Vec3, wi: Vec3) -> T::Spectrum {
+        self.eval_prepared(&self.prepare(wo), wi)
+    }
+
+    #[inline]
+    fn sample(&self, wo: Vec3, u: Vec2, uc: f32) -> Option<BxdfSample<T::Spectrum>> {
+        self.sample_prepared(&self.prepare(wo), u, uc)
+    }
+
+    #[inline]
+    fn pdf(&self, wo: Vec3, wi: Vec3) -> f32 {
+        self.pdf_prepared(&self.prepare(wo), wi)
+    }
+
+    #[inline]
+    fn lobes(&self) -> Lobes {
+        Prepare::lobes(self)
+    }
+}
+
+/// A one-sided reflection model sampled by cosine-weighted directions, as the diffuse models
+/// are: write its value for directions above the surface, and [`Prepare`] (and so [`Bxdf`])
+/// follows — zero unless both directions are above, directions drawn with density
+/// `cos θi / π` (Malley's method), lobe [`Lobes::DIFFUSE_REFLECTION`].
+///
+/// ```
+/// use lobe::bxdf::{Bxdf, CosineSampled};
+/// use lobe::{Vec2, Vec3};
+/// /// A grey Lambertian reflector of your own.
+/// struct Grey;
+/// impl CosineSampled for Grey {
+///     type Spectrum = f32;
+///     fn value(&self, _wo: Vec3, _wi: Vec3) -> f32 {
+///         0.5 / core::f32::consts::PI
+///     }
+/// }
+/// let s = Grey.sample(Vec3::Z, Vec2::new(0.3, 0.6), 0.5).unwrap();
+/// assert!((s.weight() - 0.5).abs() < 1e-6);
+/// ```
+pub trait CosineSampled {
+    /// The carrier of the BSDF's values.
+    type Spectrum: Spectrum;
+
+    /// `f(wo, wi)` for `wo` and `wi` strictly above the surface: finite and non-negative.
+    #[must_use]
+    fn value(&self, wo: Vec3, wi: Vec3) -> Self::Spectrum;
+}
+
+impl<T: CosineSampled> Prepare for T {
+    type Spectrum = T::Spectrum;
+    /// `wo` itself: the cosine sampler needs nothing else.
+    type Prepared = Vec3;
+
+    #[inline]
+    fn prepare(&self, wo: Vec3) -> Vec3 {
+        wo
+    }
+
+    #[inline]
+    fn eval_prepared(&self, &wo: &Vec3, wi: Vec3) -> T::Spectrum {
+        if both_above(wo, wi) {
+            self.value(wo, wi)
+        } else {
+            T::Spectrum::zero()
+        }
+    }
+
+    #[inline]
+    fn pdf_prepared(&self, &wo: &Vec3, wi: Vec3) -> f32 {
+        pdf_cosine(wo, wi)
+    }
+
+    #[inline]
+    fn eval_pdf_prepared(&self, &wo: &Vec3, wi: Vec3) -> (T::Spectrum, f32) {
+        if both_above(wo, wi) {
+            (
+                self.value(wo, wi),
+                crate::sampling::cosine_hemisphere_pdf(wi.z),
+            )
+        } else {
+            (T::Spectrum::zero(), 0.0)
+        }
+    }
+
+    #[inline]
+    fn sample_prepared(&self, &wo: &Vec3, u: Vec2, _uc: f32) -> Option<BxdfSample<T::Spectrum>> {
+        sample_cosine(wo, u, |wi| self.value(wo, wi))
+    }
+
+    #[inline]
+    fn lobes(&self) -> Lobes {
+        Lobes::DIFFUSE_REFLECTION
+    }
 }
 
 /// Cosine-weighted sampling, shared by the diffuse models: `wi` with density `cos θi / π`

@@ -1,10 +1,10 @@
 //! The qualitative Oren-Nayar rough diffuse BRDF.
 
-use super::{Bxdf, BxdfSample, Lobes, both_above, pdf_cosine, sample_cosine};
+use super::CosineSampled;
 use crate::param::ParamError;
 use crate::spectrum::Spectrum;
 use core::f32::consts::{FRAC_1_PI, FRAC_PI_2};
-use glam::{Vec2, Vec3};
+use glam::Vec3;
 
 /// The qualitative Oren-Nayar model of a rough diffuse surface ("QON"):
 ///
@@ -40,7 +40,7 @@ use glam::{Vec2, Vec3};
 /// `E(θo) = ρ (A + (2B/π) sin θo [θo/2 − sin θo cos θo/2 + (1 − sin³θo)/(3 cos θo)])`,
 ///
 /// which rises from `ρA` at the normal to `ρ(A + B/2)` at the horizon. With `ρ = 1`
-/// (figures from the closed form, confirmed by quadrature of [`Bxdf::eval`] to 2e-6 and by
+/// (figures from the closed form, confirmed by quadrature of [`Bxdf::eval`](super::Bxdf::eval) to 2e-6 and by
 /// Monte Carlo in `tests/bxdf_oren_nayar.rs`):
 ///
 /// | σ (rad) | θo = 0° | 30° | 60° | 80° | 89° | → 90° | worst loss |
@@ -154,8 +154,11 @@ impl<S: Spectrum> OrenNayar<S> {
         let e = core::f32::consts::PI * self.a + 2.0 * self.b * sin * bracket;
         self.reflectance * e
     }
+}
 
-    /// `f` for `wo`, `wi` known to be above the surface.
+impl<S: Spectrum> CosineSampled for OrenNayar<S> {
+    type Spectrum = S;
+
     #[inline]
     fn value(&self, wo: Vec3, wi: Vec3) -> S {
         // max(0, cos Δφ) sin α tan β = max(0, wi.xy·wo.xy) / max(cos θi, cos θo).
@@ -163,33 +166,5 @@ impl<S: Spectrum> OrenNayar<S> {
         let t = wo.z.max(wi.z).max(f32::MIN_POSITIVE);
         let g = if s > 0.0 { s / t } else { 0.0 };
         self.reflectance * (self.a + self.b * g)
-    }
-}
-
-impl<S: Spectrum> Bxdf for OrenNayar<S> {
-    type Spectrum = S;
-
-    #[inline]
-    fn eval(&self, wo: Vec3, wi: Vec3) -> S {
-        if both_above(wo, wi) {
-            self.value(wo, wi)
-        } else {
-            S::zero()
-        }
-    }
-
-    #[inline]
-    fn sample(&self, wo: Vec3, u: Vec2, _uc: f32) -> Option<BxdfSample<S>> {
-        sample_cosine(wo, u, |wi| self.value(wo, wi))
-    }
-
-    #[inline]
-    fn pdf(&self, wo: Vec3, wi: Vec3) -> f32 {
-        pdf_cosine(wo, wi)
-    }
-
-    #[inline]
-    fn lobes(&self) -> Lobes {
-        Lobes::DIFFUSE_REFLECTION
     }
 }

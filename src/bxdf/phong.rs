@@ -3,7 +3,7 @@
 use super::diffuse_glossy::{
     check_exponent, check_sum, cos_power_norm, diffuse_probability, weighted_lobes,
 };
-use super::{Bxdf, BxdfSample, Lobes, both_above};
+use super::{BxdfSample, Lobes, Prepare, both_above};
 use crate::frame::Frame;
 use crate::math::{exp, ln_1p, powf, sqrt};
 use crate::param::ParamError;
@@ -34,7 +34,7 @@ use glam::{Vec2, Vec3};
 /// black model) the diffuse lobe, cosine-weighted; otherwise the glossy lobe, with density
 /// `(p + 1)/(2π) cos^p α` around `r` (`α` the angle between `wi` and `r`), drawn in
 /// [`Frame::from_normal(r)`](Frame::from_normal). A glossy direction below the horizon is
-/// the sampler's missing mass: `sample` returns `None` for it. [`Bxdf::pdf`] is the mixture
+/// the sampler's missing mass: `sample` returns `None` for it. [`Bxdf::pdf`](super::Bxdf::pdf) is the mixture
 /// `P_d cos θi/π + (1 − P_d)(p + 1)/(2π) cos^p α`, and a sample's `f` is the whole BRDF, both
 /// lobes.
 ///
@@ -186,11 +186,17 @@ impl<S: Spectrum> Phong<S> {
     }
 }
 
-impl<S: Spectrum> Bxdf for Phong<S> {
+impl<S: Spectrum> Prepare for Phong<S> {
     type Spectrum = S;
+    type Prepared = Vec3;
 
     #[inline]
-    fn eval(&self, wo: Vec3, wi: Vec3) -> S {
+    fn prepare(&self, wo: Vec3) -> Vec3 {
+        wo
+    }
+
+    #[inline]
+    fn eval_prepared(&self, &wo: &Vec3, wi: Vec3) -> S {
         if both_above(wo, wi) {
             self.value(self.lobe(wo, wi))
         } else {
@@ -199,7 +205,7 @@ impl<S: Spectrum> Bxdf for Phong<S> {
     }
 
     #[inline]
-    fn sample(&self, wo: Vec3, u: Vec2, uc: f32) -> Option<BxdfSample<S>> {
+    fn sample_prepared(&self, &wo: &Vec3, u: Vec2, uc: f32) -> Option<BxdfSample<S>> {
         if !(wo.z > 0.0) {
             return None;
         }
@@ -232,11 +238,22 @@ impl<S: Spectrum> Bxdf for Phong<S> {
     }
 
     #[inline]
-    fn pdf(&self, wo: Vec3, wi: Vec3) -> f32 {
+    fn pdf_prepared(&self, &wo: &Vec3, wi: Vec3) -> f32 {
         if both_above(wo, wi) {
             self.density(wi.z, self.lobe(wo, wi))
         } else {
             0.0
+        }
+    }
+
+    #[inline]
+    fn eval_pdf_prepared(&self, &wo: &Vec3, wi: Vec3) -> (S, f32) {
+        if both_above(wo, wi) {
+            // One evaluation of the lobe serves both.
+            let lobe = self.lobe(wo, wi);
+            (self.value(lobe), self.density(wi.z, lobe))
+        } else {
+            (S::zero(), 0.0)
         }
     }
 

@@ -1,7 +1,7 @@
 //! A diffuse base under a rough dielectric coat: the glazed material's rough variant.
 
 use super::glazed::cosine_weighted_average;
-use super::{Bxdf, BxdfSample, Lobes, Microfacet, both_above};
+use super::{At, Bxdf, BxdfSample, Lobes, Microfacet, Prepare, both_above};
 use crate::fresnel::Dielectric;
 use crate::microfacet::{Masking, NormalDistribution};
 use crate::param::{Eta, ParamError, unit_interval};
@@ -85,20 +85,28 @@ impl<D: NormalDistribution, S: Spectrum> Plastic<D, S> {
         self.coat_albedo[i] + f * (self.coat_albedo[i + 1] - self.coat_albedo[i])
     }
 
-    /// The diffuse term for `wo`, `wi` above the surface.
+    /// The diffuse term for `wo`, `wi` above the surface, with `t_o = 1 − E(cos θo)`.
     #[inline]
-    fn diffuse(&self, wo: Vec3, wi: Vec3) -> S {
-        let t = (1.0 - self.coat_albedo_at(wo.z)) * (1.0 - self.coat_albedo_at(wi.z));
+    fn diffuse(&self, t_o: f32, wi: Vec3) -> S {
+        let t = t_o * (1.0 - self.coat_albedo_at(wi.z));
         self.reflectance * (t * self.diffuse_scale)
     }
 
-    /// The probability of sampling the coat's lobe.
+    /// The probability of sampling the coat's lobe, given the coat's albedo `e` at `wo`.
     #[inline]
-    fn coat_probability(&self, wo: Vec3) -> f32 {
-        let e = self.coat_albedo_at(wo.z);
+    fn coat_probability(&self, e: f32) -> f32 {
         let total = e + (1.0 - e) * self.reflectance.average();
         if total > 0.0 { e / total } else { 1.0 }
     }
+}
+
+/// What [`Plastic`] keeps about `wo` ([`Prepare::prepare`]): the coat's prepared state, the
+/// probability of sampling the coat and the coat's transmittance `1 − E(cos θo)`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PlasticState<C> {
+    coat: C,
+    p_coat: f32,
+    t_o: f32,
 }
 
 /// The coat's directional albedo at `cos θo = mu`, by its own sampler on a stratified grid.
@@ -122,55 +130,84 @@ fn coat_directional_albedo<D: NormalDistribution>(
     sum / (STRATA * STRATA) as f32
 }
 
-impl<D: NormalDistribution, S: Spectrum> Bxdf for Plastic<D, S> {
+impl<D: NormalDistribution, S: Spectrum> Prepare for Plastic<D, S> {
     type Spectrum = S;
+    type Prepared = At<PlasticState<<Microfacet<D, Dielectric> as Prepare>::Prepared>>;
 
     #[inline]
-    fn eval(&self, wo: Vec3, wi: Vec3) -> S {
-        if !both_above(wo, wi) {
-            return S::zero();
+    fn prepare(&self, wo: Vec3) -> Self::Prepared {
+        let e = self.coat_albedo_at(wo.z);
+        At {
+            wo,
+            state: PlasticState {
+                coat: self.coat.prepare(wo),
+                p_coat: self.coat_probability(e),
+                t_o: 1.0 - e,
+            },
         }
-        S::splat(self.coat.eval(wo, wi)) + self.diffuse(wo, wi)
     }
 
-    fn sample(&self, wo: Vec3, u: Vec2, uc: f32) -> Option<BxdfSample<S>> {
-        if !(wo.z > 0.0) {
+    #[inline]
+    fn eval_prepared(&self, at: &Self::Prepared, wi: Vec3) -> S {
+        if !both_above(at.wo, wi) {
+            return S::zero();
+        }
+        let st = &at.state;
+        S::splat(self.coat.eval_prepared(&st.coat, wi)) + self.diffuse(st.t_o, wi)
+    }
+
+    #[inline]
+    fn pdf_prepared(&self, at: &Self::Prepared, wi: Vec3) -> f32 {
+        if !both_above(at.wo, wi) {
+            return 0.0;
+        }
+        let st = &at.state;
+        st.p_coat * self.coat.pdf_prepared(&st.coat, wi)
+            + (1.0 - st.p_coat) * cosine_hemisphere_pdf(wi.z)
+    }
+
+    #[inline]
+    fn eval_pdf_prepared(&self, at: &Self::Prepared, wi: Vec3) -> (S, f32) {
+        if !both_above(at.wo, wi) {
+            return (S::zero(), 0.0);
+        }
+        let st = &at.state;
+        let (coat_f, coat_pdf) = self.coat.eval_pdf_prepared(&st.coat, wi);
+        (
+            S::splat(coat_f) + self.diffuse(st.t_o, wi),
+            st.p_coat * coat_pdf + (1.0 - st.p_coat) * cosine_hemisphere_pdf(wi.z),
+        )
+    }
+
+    fn sample_prepared(&self, at: &Self::Prepared, u: Vec2, uc: f32) -> Option<BxdfSample<S>> {
+        if !(at.wo.z > 0.0) {
             return None;
         }
-        let p_coat = self.coat_probability(wo);
+        let st = &at.state;
         // The coat's value and density at wi: from its own sample when it drew wi (the same
         // numbers its eval and pdf give), else evaluated together with one D.
-        let (wi, coat_f, coat_pdf, lobe) = if uc < p_coat {
-            let s = self.coat.sample(wo, u, 0.5)?;
+        let (wi, coat_f, coat_pdf, lobe) = if uc < st.p_coat {
+            let s = self.coat.sample_prepared(&st.coat, u, 0.5)?;
             (s.wi, s.f, s.pdf, Lobes::GLOSSY_REFLECTION)
         } else {
             let wi = cosine_hemisphere(u);
-            let (f, pdf) = self.coat.value_and_density(wo, wi);
+            let (f, pdf) = self.coat.eval_pdf_prepared(&st.coat, wi);
             (wi, f, pdf, Lobes::DIFFUSE_REFLECTION)
         };
         if !(wi.z > 0.0) {
             return None;
         }
-        let pdf = p_coat * coat_pdf + (1.0 - p_coat) * cosine_hemisphere_pdf(wi.z);
+        let pdf = st.p_coat * coat_pdf + (1.0 - st.p_coat) * cosine_hemisphere_pdf(wi.z);
         if !(pdf > 0.0 && pdf.is_finite()) {
             return None;
         }
         Some(BxdfSample {
             wi,
-            f: S::splat(coat_f) + self.diffuse(wo, wi),
+            f: S::splat(coat_f) + self.diffuse(st.t_o, wi),
             pdf,
             lobe,
             eta: 1.0,
         })
-    }
-
-    #[inline]
-    fn pdf(&self, wo: Vec3, wi: Vec3) -> f32 {
-        if !both_above(wo, wi) {
-            return 0.0;
-        }
-        let p_coat = self.coat_probability(wo);
-        p_coat * self.coat.pdf(wo, wi) + (1.0 - p_coat) * cosine_hemisphere_pdf(wi.z)
     }
 
     #[inline]

@@ -1,9 +1,9 @@
 //! Walter et al.'s rough dielectric: microfacet reflection and refraction.
 
-use super::{Bxdf, BxdfSample, Lobes, TransportMode};
+use super::{At, BxdfSample, Lobes, Prepare, TransportMode};
 use crate::frame::{reflect, refract};
 use crate::fresnel::{dielectric, dielectric_refracted};
-use crate::microfacet::{Masking, NormalDistribution};
+use crate::microfacet::{Masking, NormalDistribution, View};
 use crate::param::Eta;
 use glam::{Vec2, Vec3};
 
@@ -135,20 +135,30 @@ impl<D: NormalDistribution> RoughDielectric<D> {
         dielectric(wo.dot(c.h), self.eta)
     }
 
-    /// `f` for a configuration, with `d = D(h)` and, for reflection, `f_wo = F(wo·h)`
-    /// (refraction uses the two-cosine Fresnel term instead and ignores it).
+    /// `f` for a configuration, with `d = D(h)` and `fresnel = F(wo·h)`, which only
+    /// reflection uses.
     #[inline]
-    fn value(&self, wo: Vec3, wi: Vec3, c: &Configuration, d: f32, f_wo: f32) -> f32 {
+    fn value(
+        &self,
+        at: &At<View>,
+        wi: Vec3,
+        c: &Configuration,
+        d: f32,
+        fresnel: impl FnOnce() -> f32,
+    ) -> f32 {
         if d == 0.0 {
             return 0.0;
         }
-        let (woh, wih) = (wo.dot(c.h), wi.dot(c.h));
-        let g = self.masking.g2(&self.distribution, wo, wi, c.h);
+        let wo = at.wo;
+        let g = self.masking.g2_view(&self.distribution, &at.state, wi, c.h);
         if c.reflection {
-            (f_wo * d * g / (4.0 * wo.z * wi.z)).abs().min(f32::MAX)
+            (fresnel() * d * g / (4.0 * wo.z * wi.z))
+                .abs()
+                .min(f32::MAX)
         } else {
             // Fresnel from both cosines: symmetric in wo and wi, so f is reciprocal to
             // round-off even at the critical angle, where Snell's cos θt cancels.
+            let (woh, wih) = (wo.dot(c.h), wi.dot(c.h));
             let f = dielectric_refracted(woh, wih, c.etap);
             let t =
                 ((1.0 - f) * d * g * (wih * woh / (wi.z * wo.z * c.denom2)).abs()).min(f32::MAX);
@@ -159,13 +169,14 @@ impl<D: NormalDistribution> RoughDielectric<D> {
         }
     }
 
-    /// The density of a configuration, with `d = D(h)` and `f = F(wo·h)`.
+    /// The density of a configuration, with `d = D(h)` and `f = F(wo·h)`: the normal's
+    /// density, the probability of the lobe and the Jacobian of reflection `1/(4 |wo·h|)` or
+    /// of refraction `|wi·h| / (wi·h + (wo·h)/η')²` (Walter et al. 2007, eqs. 14 and 17).
     #[inline]
-    fn density(&self, wo: Vec3, wi: Vec3, c: &Configuration, d: f32, f: f32) -> f32 {
-        let woh = wo.dot(c.h);
-        let pdf_h = self.distribution.pdf_given_d(wo, c.h, d);
+    fn density(&self, at: &At<View>, wi: Vec3, c: &Configuration, d: f32, f: f32) -> f32 {
+        let pdf_h = self.distribution.pdf(&at.state, c.h, d);
         if c.reflection {
-            pdf_h * f / (4.0 * woh.abs())
+            pdf_h * f / (4.0 * at.wo.dot(c.h).abs())
         } else {
             pdf_h * (1.0 - f) * wi.dot(c.h).abs() / c.denom2
         }
@@ -184,26 +195,52 @@ struct Configuration {
     denom2: f32,
 }
 
-impl<D: NormalDistribution> Bxdf for RoughDielectric<D> {
+impl<D: NormalDistribution> Prepare for RoughDielectric<D> {
     type Spectrum = f32;
+    type Prepared = At<View>;
+
+    /// `wo` and the distribution's view of it (of `−wo` from the inside).
+    #[inline]
+    fn prepare(&self, wo: Vec3) -> Self::Prepared {
+        At {
+            wo,
+            state: self.distribution.view(wo),
+        }
+    }
 
     #[inline]
-    fn eval(&self, wo: Vec3, wi: Vec3) -> f32 {
-        self.configuration(wo, wi).map_or(0.0, |c| {
-            let f_wo = if c.reflection {
-                self.fresnel(wo, &c)
-            } else {
-                0.0
-            };
-            self.value(wo, wi, &c, self.distribution.d(c.h), f_wo)
+    fn eval_prepared(&self, at: &Self::Prepared, wi: Vec3) -> f32 {
+        self.configuration(at.wo, wi).map_or(0.0, |c| {
+            let d = self.distribution.d(c.h);
+            self.value(at, wi, &c, d, || self.fresnel(at.wo, &c))
         })
     }
 
-    fn sample(&self, wo: Vec3, u: Vec2, uc: f32) -> Option<BxdfSample<f32>> {
+    #[inline]
+    fn pdf_prepared(&self, at: &Self::Prepared, wi: Vec3) -> f32 {
+        self.configuration(at.wo, wi).map_or(0.0, |c| {
+            let (d, f) = (self.distribution.d(c.h), self.fresnel(at.wo, &c));
+            self.density(at, wi, &c, d, f)
+        })
+    }
+
+    #[inline]
+    fn eval_pdf_prepared(&self, at: &Self::Prepared, wi: Vec3) -> (f32, f32) {
+        self.configuration(at.wo, wi).map_or((0.0, 0.0), |c| {
+            let (d, f) = (self.distribution.d(c.h), self.fresnel(at.wo, &c));
+            (
+                self.value(at, wi, &c, d, || f),
+                self.density(at, wi, &c, d, f),
+            )
+        })
+    }
+
+    fn sample_prepared(&self, at: &Self::Prepared, u: Vec2, uc: f32) -> Option<BxdfSample<f32>> {
+        let wo = at.wo;
         if wo.z == 0.0 {
             return None;
         }
-        let m = self.distribution.sample(wo, u);
+        let m = self.distribution.sample(&at.state, u);
         let f = dielectric(wo.dot(m), self.eta);
         let wi = if uc < f {
             reflect(wo, m)
@@ -217,7 +254,7 @@ impl<D: NormalDistribution> Bxdf for RoughDielectric<D> {
         }
         // D and F(wo·h) once, for both the value and the density.
         let (d, f_wo) = (self.distribution.d(c.h), self.fresnel(wo, &c));
-        let pdf = self.density(wo, wi, &c, d, f_wo);
+        let pdf = self.density(at, wi, &c, d, f_wo);
         if !(pdf > 0.0 && pdf.is_finite()) {
             return None;
         }
@@ -228,17 +265,10 @@ impl<D: NormalDistribution> Bxdf for RoughDielectric<D> {
         };
         Some(BxdfSample {
             wi,
-            f: self.value(wo, wi, &c, d, f_wo),
+            f: self.value(at, wi, &c, d, || f_wo),
             pdf,
             lobe,
             eta,
-        })
-    }
-
-    #[inline]
-    fn pdf(&self, wo: Vec3, wi: Vec3) -> f32 {
-        self.configuration(wo, wi).map_or(0.0, |c| {
-            self.density(wo, wi, &c, self.distribution.d(c.h), self.fresnel(wo, &c))
         })
     }
 

@@ -1,6 +1,6 @@
 //! A smooth dielectric interface: delta reflection and refraction with the exact Fresnel term.
 
-use super::{Bxdf, BxdfSample, Lobes, TransportMode, delta_scale};
+use super::{BxdfSample, Lobes, Prepare, TransportMode, delta_scale};
 use crate::frame::refract;
 use crate::fresnel::dielectric;
 use crate::param::Eta;
@@ -46,16 +46,22 @@ impl SmoothDielectric {
     }
 }
 
-impl Bxdf for SmoothDielectric {
+impl Prepare for SmoothDielectric {
     type Spectrum = f32;
+    type Prepared = Vec3;
 
     #[inline]
-    fn eval(&self, _wo: Vec3, _wi: Vec3) -> f32 {
+    fn prepare(&self, wo: Vec3) -> Vec3 {
+        wo
+    }
+
+    #[inline]
+    fn eval_prepared(&self, _wo: &Vec3, _wi: Vec3) -> f32 {
         0.0
     }
 
     #[inline]
-    fn sample(&self, wo: Vec3, _u: Vec2, uc: f32) -> Option<BxdfSample<f32>> {
+    fn sample_prepared(&self, &wo: &Vec3, _u: Vec2, uc: f32) -> Option<BxdfSample<f32>> {
         if wo.z == 0.0 {
             return None;
         }
@@ -94,7 +100,7 @@ impl Bxdf for SmoothDielectric {
     }
 
     #[inline]
-    fn pdf(&self, _wo: Vec3, _wi: Vec3) -> f32 {
+    fn pdf_prepared(&self, _wo: &Vec3, _wi: Vec3) -> f32 {
         0.0
     }
 

@@ -1,6 +1,6 @@
 //! A thin dielectric sheet (a window pane): delta reflection and straight-through transmission.
 
-use super::{Bxdf, BxdfSample, Lobes, delta_scale};
+use super::{BxdfSample, Lobes, Prepare, delta_scale};
 use crate::fresnel::dielectric;
 use crate::param::Eta;
 use glam::{Vec2, Vec3};
@@ -43,16 +43,22 @@ impl ThinDielectric {
     }
 }
 
-impl Bxdf for ThinDielectric {
+impl Prepare for ThinDielectric {
     type Spectrum = f32;
+    type Prepared = Vec3;
 
     #[inline]
-    fn eval(&self, _wo: Vec3, _wi: Vec3) -> f32 {
+    fn prepare(&self, wo: Vec3) -> Vec3 {
+        wo
+    }
+
+    #[inline]
+    fn eval_prepared(&self, _wo: &Vec3, _wi: Vec3) -> f32 {
         0.0
     }
 
     #[inline]
-    fn sample(&self, wo: Vec3, _u: Vec2, uc: f32) -> Option<BxdfSample<f32>> {
+    fn sample_prepared(&self, &wo: &Vec3, _u: Vec2, uc: f32) -> Option<BxdfSample<f32>> {
         if wo.z == 0.0 {
             return None;
         }
@@ -75,7 +81,7 @@ impl Bxdf for ThinDielectric {
     }
 
     #[inline]
-    fn pdf(&self, _wo: Vec3, _wi: Vec3) -> f32 {
+    fn pdf_prepared(&self, _wo: &Vec3, _wi: Vec3) -> f32 {
         0.0
     }
 

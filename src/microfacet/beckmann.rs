@@ -1,6 +1,6 @@
 //! The Beckmann distribution, anisotropic, with exact Smith masking or Walter's rational fit.
 
-use super::{NormalDistribution, VisibleNormals, upper};
+use super::{NormalDistribution, SampleDCos, Sampling, View};
 use crate::math::{erf_inv, erfc, exp, ln, ln_1p, sin_cos, sqrt};
 use crate::param::Alpha;
 use core::f32::consts::{FRAC_1_PI, TAU};
@@ -117,6 +117,11 @@ fn g1_rational(a: f32) -> f32 {
 
 impl NormalDistribution for Beckmann {
     #[inline]
+    fn sampling(&self) -> Sampling {
+        Sampling::VisibleNormals
+    }
+
+    #[inline]
     fn d(&self, m: Vec3) -> f32 {
         if !(m.z > 0.0) {
             return 0.0;
@@ -155,40 +160,14 @@ impl NormalDistribution for Beckmann {
         }
     }
 
-    #[inline]
-    fn sample(&self, w: Vec3, u: Vec2) -> Vec3 {
-        self.sample_visible(w, u)
-    }
-
-    #[inline]
-    fn pdf(&self, w: Vec3, m: Vec3) -> f32 {
-        self.d_visible(w, m)
-    }
-
-    #[inline]
-    fn pdf_given_d(&self, w: Vec3, m: Vec3, d: f32) -> f32 {
-        self.d_visible_given_d(w, m, d)
-    }
-
-    /// Slopes drawn from the Gaussian slope distribution, radius `√(−ln(1 − u))`, stretched
-    /// by `(αx, αy)` (Walter et al. 2007, eq. 28, in slope form).
-    #[inline]
-    fn sample_d_cos(&self, u: Vec2) -> Vec3 {
-        let r = sqrt(-ln_1p(-u.x.min(1.0 - f32::EPSILON / 2.0)));
-        let (s, c) = sin_cos(TAU * u.y);
-        Vec3::new(-self.ax * r * c, -self.ay * r * s, 1.0).normalize_or(Vec3::Z)
-    }
-}
-
-impl VisibleNormals for Beckmann {
     /// In the configuration stretched to `α = 1`, with the view at polar angle `θ`, the
     /// visible slope `x̃` along the view's azimuth has the density `∝ (cos θ − x̃ sin θ) e^(−x̃²)`
     /// for `x̃ < cot θ` and the other slope `ỹ` is an independent Gaussian (Heitz & d'Eon
     /// 2014, §4 and supplemental). The CDF of `x̃`,
     /// `C(x) = cos θ · erfc(−x)/2 + sin θ · e^(−x²)/(2√π)`, is inverted by Newton steps kept
     /// inside a shrinking bracket.
-    fn sample_visible(&self, w: Vec3, u: Vec2) -> Vec3 {
-        let w = upper(w);
+    fn sample(&self, view: &View, u: Vec2) -> Vec3 {
+        let w = view.w;
         let ws = Vec3::new(self.ax * w.x, self.ay * w.y, w.z).normalize_or(Vec3::Z);
         let sin_t = sqrt(ws.x * ws.x + ws.y * ws.y);
         let cos_t = ws.z;
@@ -202,6 +181,17 @@ impl VisibleNormals for Beckmann {
         };
         let (sx, sy) = (cos_p * x - sin_p * y, sin_p * x + cos_p * y);
         Vec3::new(-self.ax * sx, -self.ay * sy, 1.0).normalize_or(Vec3::Z)
+    }
+}
+
+impl SampleDCos for Beckmann {
+    /// Slopes drawn from the Gaussian slope distribution, radius `√(−ln(1 − u))`, stretched
+    /// by `(αx, αy)` (Walter et al. 2007, eq. 28, in slope form).
+    #[inline]
+    fn sample_d_cos(&self, u: Vec2) -> Vec3 {
+        let r = sqrt(-ln_1p(-u.x.min(1.0 - f32::EPSILON / 2.0)));
+        let (s, c) = sin_cos(TAU * u.y);
+        Vec3::new(-self.ax * r * c, -self.ay * r * s, 1.0).normalize_or(Vec3::Z)
     }
 }
 

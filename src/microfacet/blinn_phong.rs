@@ -1,7 +1,7 @@
 //! The normalised Blinn-Phong distribution.
 
 use super::smith_table::SmithTable;
-use super::{Beckmann, NormalDistribution};
+use super::{Beckmann, NormalDistribution, SampleDCos, Sampling, View};
 use crate::math::{cos_pow, exp, exp_m1, ln, sqrt};
 use crate::param::{Alpha, ParamError};
 use core::f32::consts::FRAC_1_PI;
@@ -117,6 +117,11 @@ impl BlinnPhongNdf {
 
 impl NormalDistribution for BlinnPhongNdf {
     #[inline]
+    fn sampling(&self) -> Sampling {
+        Sampling::DCos
+    }
+
+    #[inline]
     fn d(&self, m: Vec3) -> f32 {
         if !(m.z > 0.0) {
             return 0.0;
@@ -148,20 +153,12 @@ impl NormalDistribution for BlinnPhongNdf {
     }
 
     #[inline]
-    fn sample(&self, _w: Vec3, u: Vec2) -> Vec3 {
+    fn sample(&self, _view: &View, u: Vec2) -> Vec3 {
         self.sample_d_cos(u)
     }
+}
 
-    #[inline]
-    fn pdf(&self, _w: Vec3, m: Vec3) -> f32 {
-        self.pdf_d_cos(m)
-    }
-
-    #[inline]
-    fn pdf_given_d(&self, _w: Vec3, m: Vec3, d: f32) -> f32 {
-        d * m.z.max(0.0)
-    }
-
+impl SampleDCos for BlinnPhongNdf {
     /// `cos θm = u^(1/(p+2))`, the inverse of the CDF `cos^(p+2)` of `D cos θ` over `cos θ`
     /// (Walter et al. 2007, eq. 31); `sin² θm = −expm1(2 ln u/(p+2))` keeps its digits for
     /// large `p`.

@@ -1,6 +1,6 @@
 //! The GGX (Trowbridge-Reitz) distribution, anisotropic.
 
-use super::{NormalDistribution, VisibleNormals, upper};
+use super::{NormalDistribution, SampleDCos, Sampling, View, upper};
 use crate::math::{safe_sqrt, sin_cos, sqrt};
 use crate::param::Alpha;
 use core::f32::consts::{FRAC_1_PI, TAU};
@@ -21,8 +21,9 @@ use glam::{Vec2, Vec3};
 /// `Λ` is exact, so the projected area `∫ G1 max(0, w·m) D dm = cos θ` and `∫ D_w dm = 1` hold
 /// within the Monte Carlo error for `α` from 0.01 to 2, both at 1:1 and 1:4 anisotropy.
 ///
-/// Sampling: [`sample_visible`](VisibleNormals::sample_visible) draws visible normals by the
-/// spherical-cap method (Dupuy & Benyoub 2023); [`Ggx::sample_visible_bounded`] is Eto &
+/// Sampling: [`sample`](NormalDistribution::sample) draws visible normals by the
+/// spherical-cap method (Dupuy & Benyoub 2023);
+/// [`sample_reflection`](NormalDistribution::sample_reflection) and [`Ggx::sample_visible_bounded`] are Eto &
 /// Tokuyoshi's (2023) bounded variant for reflection, which wastes fewer samples below the
 /// horizon. Both pass the chi-square test against their densities. Measured fraction of
 /// reflected directions lost below the horizon (VNDF → bounded): `α = 0.3`: 8.9% → 3.9% at
@@ -73,6 +74,14 @@ impl Ggx {
         Self { bounded, ..self }
     }
 
+    /// Whether [`sample_reflection`](NormalDistribution::sample_reflection) uses the bounded
+    /// sampler ([`with_bounded_reflection`](Self::with_bounded_reflection)).
+    #[inline]
+    #[must_use]
+    pub fn bounded_reflection(&self) -> bool {
+        self.bounded
+    }
+
     /// An isotropic GGX distribution of width `alpha`.
     #[must_use]
     pub fn isotropic(alpha: Alpha) -> Self {
@@ -86,11 +95,11 @@ impl Ggx {
         (self.ax, self.ay)
     }
 
-    /// `(αx wx)² + (αy wy)²`: `α(φ)² tan² θ · cos² θ` of a direction.
+    /// `(αx wx, αy wy)`, and `(αx wx)² + (αy wy)²`: `α(φ)² tan² θ · cos² θ` of a direction.
     #[inline]
-    fn stretched_xy2(&self, w: Vec3) -> f32 {
+    fn stretched_xy(&self, w: Vec3) -> (f32, f32, f32) {
         let (x, y) = (self.ax * w.x, self.ay * w.y);
-        x * x + y * y
+        (x, y, x * x + y * y)
     }
 
     /// `w` in the configuration where the distribution is the uniform hemisphere
@@ -131,7 +140,7 @@ impl Ggx {
     }
 
     /// Draws a normal for **reflection** with Eto & Tokuyoshi's bounded VNDF sampler (2023):
-    /// the spherical cap of [`sample_visible`](VisibleNormals::sample_visible) shrunk so that
+    /// the spherical cap of [`sample`](NormalDistribution::sample) shrunk so that
     /// fewer normals reflect `w` below the horizon. Density
     /// [`d_visible_bounded`](Self::d_visible_bounded).
     #[must_use]
@@ -153,13 +162,13 @@ impl Ggx {
 
     /// [`d_visible_bounded`](Self::d_visible_bounded) with `d = D(m)` already known.
     fn d_visible_bounded_given_d(&self, w: Vec3, m: Vec3, d: f32) -> f32 {
-        let w = upper(w);
-        let dv = self.d_visible_given_d(w, m, d);
+        let view = self.view(w);
+        let dv = view.visible_density(m, d);
         if dv == 0.0 {
             return 0.0;
         }
-        let wh = self.stretch(w);
-        let b = self.bounded_cap(w, wh);
+        let wh = stretched_view(&view);
+        let b = self.bounded_cap(view.w, wh);
         // The cap direction that produced m: wh reflected about the stretched normal.
         let h = Vec3::new(m.x * self.inv_ax, m.y * self.inv_ay, m.z).normalize_or(Vec3::Z);
         let c = 2.0 * h.dot(wh) * h - wh;
@@ -170,7 +179,25 @@ impl Ggx {
     }
 }
 
+/// What a [`Ggx`] view keeps in [`View::extra`] for its samplers: the view `wh` in the
+/// configuration where the distribution is the uniform hemisphere (`extra[0..3]`), the lower
+/// end `−b` of the cap [`sample_reflection`](NormalDistribution::sample_reflection) draws from
+/// (`extra[3]`: Eto & Tokuyoshi's bounded cap, or `wh.z` for plain visible normals), and the
+/// reflection density's factor (`extra[4]`): the bounded sampler's density of a normal that
+/// reflects above the horizon is `extra[4] · (w·m) · D(m)` with
+/// `extra[4] = G1/cos θ · (1 + wh.z)/(1 + b)`, that is `2 / (|(αx wx, αy wy, wz)| + k wz)`
+/// (Eto & Tokuyoshi 2023, eq. 7).
+#[inline]
+fn stretched_view(view: &View) -> Vec3 {
+    Vec3::new(view.extra[0], view.extra[1], view.extra[2])
+}
+
 impl NormalDistribution for Ggx {
+    #[inline]
+    fn sampling(&self) -> Sampling {
+        Sampling::VisibleNormals
+    }
+
     #[inline]
     fn d(&self, m: Vec3) -> f32 {
         if !(m.z > 0.0) {
@@ -183,77 +210,64 @@ impl NormalDistribution for Ggx {
 
     #[inline]
     fn lambda(&self, w: Vec3) -> f32 {
-        let s = self.stretched_xy2(w);
-        if s == 0.0 {
-            return 0.0;
-        }
-        // a2t2 = α² tan² θ; (√(1 + x) − 1)/2 written as x / (2 (1 + √(1 + x))) to keep the
-        // digits near the normal.
-        let a2t2 = s / (w.z * w.z);
-        if a2t2 == f32::INFINITY {
-            return f32::INFINITY;
-        }
-        0.5 * a2t2 / (1.0 + sqrt(1.0 + a2t2))
+        lambda(self.stretched_xy(w).2, w.z)
     }
 
     #[inline]
     fn g1(&self, w: Vec3) -> f32 {
-        // 2 |wz| / (|wz| + |(αx wx, αy wy, wz)|), the same as 1/(1 + Λ) without the infinity.
         let z = w.z.abs();
-        let len = sqrt(self.stretched_xy2(w) + z * z);
-        if len == 0.0 { 1.0 } else { 2.0 * z / (z + len) }
+        g1(sqrt(self.stretched_xy(w).2 + z * z), z)
     }
 
+    /// Λ, G1, the visible-normal factor `2 / (wz + |(αx wx, αy wy, wz)|)`, the stretched
+    /// view and the bounded cap, sharing the one square root `|(αx wx, αy wy, wz)|`.
     #[inline]
-    fn d_visible_given_d(&self, w: Vec3, m: Vec3, d: f32) -> f32 {
+    fn view(&self, w: Vec3) -> View {
         let w = upper(w);
-        let wm = w.dot(m);
-        if !(w.z > 0.0 && wm > 0.0) {
-            return 0.0;
-        }
-        // G1(w)/cos θw = 2 / (wz + |(αx wx, αy wy, wz)|), finite at grazing.
-        let len = sqrt(self.stretched_xy2(w) + w.z * w.z);
-        2.0 * wm * d / (w.z + len)
-    }
-
-    #[inline]
-    fn pdf_given_d(&self, w: Vec3, m: Vec3, d: f32) -> f32 {
-        self.d_visible_given_d(w, m, d)
-    }
-
-    #[inline]
-    fn sample(&self, w: Vec3, u: Vec2) -> Vec3 {
-        self.sample_visible(w, u)
-    }
-
-    #[inline]
-    fn pdf(&self, w: Vec3, m: Vec3) -> f32 {
-        self.d_visible(w, m)
-    }
-
-    #[inline]
-    fn sample_reflection(&self, w: Vec3, u: Vec2) -> Vec3 {
-        if self.bounded {
-            self.sample_visible_bounded(w, u)
+        let (x, y, s) = self.stretched_xy(w);
+        let len = sqrt(s + w.z * w.z);
+        let visible = if w.z > 0.0 { 2.0 / (w.z + len) } else { 0.0 };
+        let wh = Vec3::new(x, y, w.z).normalize_or(Vec3::Z);
+        let (cap, reflection) = if self.bounded {
+            let b = self.bounded_cap(w, wh);
+            (b, visible * (1.0 + wh.z) / (1.0 + b))
         } else {
-            self.sample_visible(w, u)
+            (wh.z, visible)
+        };
+        View {
+            w,
+            lambda: lambda(s, w.z),
+            g1: g1(len, w.z),
+            visible,
+            extra: [wh.x, wh.y, wh.z, cap, reflection],
         }
     }
 
+    /// Dupuy & Benyoub 2023 ("Sampling Visible GGX Normals with Spherical Caps", Listing 3):
+    /// in the stretched configuration, the halfway vector of the view and a direction drawn
+    /// uniformly from the spherical cap `z ≥ −wh.z`.
     #[inline]
-    fn pdf_reflection(&self, w: Vec3, m: Vec3) -> f32 {
-        self.pdf_reflection_given_d(w, m, self.d(m))
+    fn sample(&self, view: &View, u: Vec2) -> Vec3 {
+        let wh = stretched_view(view);
+        self.sample_cap(wh, wh.z, u)
     }
 
     #[inline]
-    fn pdf_reflection_given_d(&self, w: Vec3, m: Vec3, d: f32) -> f32 {
-        if self.bounded {
-            self.d_visible_bounded_given_d(w, m, d)
+    fn sample_reflection(&self, view: &View, u: Vec2) -> Vec3 {
+        self.sample_cap(stretched_view(view), view.extra[3], u)
+    }
+
+    #[inline]
+    fn pdf_reflection(&self, view: &View, m: Vec3, d: f32) -> f32 {
+        if view.w.dot(m) > 0.0 {
+            0.25 * view.extra[4] * d
         } else {
-            self.d_visible_given_d(w, m, d)
+            0.0
         }
     }
+}
 
+impl SampleDCos for Ggx {
     /// Slopes drawn from GGX's slope distribution, radius `r = √(u/(1−u))` (Walter et al.
     /// 2007, eq. 35, in slope form), stretched by `(αx, αy)`.
     #[inline]
@@ -264,13 +278,24 @@ impl NormalDistribution for Ggx {
     }
 }
 
-impl VisibleNormals for Ggx {
-    /// Dupuy & Benyoub 2023 ("Sampling Visible GGX Normals with Spherical Caps", Listing 3):
-    /// in the stretched configuration, the halfway vector of the view and a direction drawn
-    /// uniformly from the spherical cap `z ≥ −wh.z`.
-    #[inline]
-    fn sample_visible(&self, w: Vec3, u: Vec2) -> Vec3 {
-        let wh = self.stretch(upper(w));
-        self.sample_cap(wh, wh.z, u)
+/// GGX's `Λ` from `(αx wx)² + (αy wy)²` and `wz`: `(√(1 + α² tan² θ) − 1)/2`, written as
+/// `x / (2 (1 + √(1 + x)))` to keep the digits near the normal (Heitz 2014, eq. 86).
+#[inline]
+fn lambda(s: f32, z: f32) -> f32 {
+    if s == 0.0 {
+        return 0.0;
     }
+    let a2t2 = s / (z * z);
+    if a2t2 == f32::INFINITY {
+        return f32::INFINITY;
+    }
+    0.5 * a2t2 / (1.0 + sqrt(1.0 + a2t2))
+}
+
+/// GGX's `G1 = 2 |wz| / (|wz| + |(αx wx, αy wy, wz)|)` from that length: the same as
+/// `1/(1 + Λ)` without the infinity.
+#[inline]
+fn g1(len: f32, z: f32) -> f32 {
+    let z = z.abs();
+    if len == 0.0 { 1.0 } else { 2.0 * z / (z + len) }
 }

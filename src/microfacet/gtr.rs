@@ -1,7 +1,7 @@
 //! Burley's generalised Trowbridge-Reitz (GTR) distribution, isotropic, any `γ > 0`.
 
-use super::NormalDistribution;
 use super::smith_table::SmithTable;
+use super::{NormalDistribution, SampleDCos, Sampling, View};
 use crate::math::{exp, exp_m1, ln, ln_1p, safe_sqrt, sin_cos, sqrt};
 use crate::param::{Alpha, ParamError};
 use core::f32::consts::{PI, TAU};
@@ -167,6 +167,11 @@ fn ln_normalisation(t: f32, ln_a2: f32, gamma: f32) -> f32 {
 
 impl NormalDistribution for Gtr {
     #[inline]
+    fn sampling(&self) -> Sampling {
+        Sampling::DCos
+    }
+
+    #[inline]
     fn d(&self, m: Vec3) -> f32 {
         if !(m.z > 0.0) {
             return 0.0;
@@ -190,20 +195,12 @@ impl NormalDistribution for Gtr {
     }
 
     #[inline]
-    fn sample(&self, _w: Vec3, u: Vec2) -> Vec3 {
+    fn sample(&self, _view: &View, u: Vec2) -> Vec3 {
         self.sample_d_cos(u)
     }
+}
 
-    #[inline]
-    fn pdf(&self, _w: Vec3, m: Vec3) -> f32 {
-        self.pdf_d_cos(m)
-    }
-
-    #[inline]
-    fn pdf_given_d(&self, _w: Vec3, m: Vec3, d: f32) -> f32 {
-        d * m.z.max(0.0)
-    }
-
+impl SampleDCos for Gtr {
     /// Inverts the CDF of `x = cos² θm`, whose density is `∝ (1 + t x)^(−γ)` with
     /// `t = α² − 1`: `(1 + t x)^(1−γ) = 1 + u ((α²)^(1−γ) − 1)` (`γ ≠ 1`), or
     /// `1 + t x = (α²)^u` (`γ = 1`); Burley 2012, appendix B.2, eqs. 6–7 in `cos²` form.

@@ -1,6 +1,6 @@
 //! The choice of masking-shadowing term `G2` in a microfacet BRDF.
 
-use super::NormalDistribution;
+use super::{NormalDistribution, View};
 use glam::Vec3;
 
 /// Which masking-shadowing term a microfacet model uses.
@@ -34,6 +34,25 @@ impl Masking {
             Self::HeightCorrelated => dist.g2(wo, wi),
             Self::Separable => dist.g2_separable(wo, wi),
             Self::VCavity => v_cavity(wo, wi, m),
+        }
+    }
+
+    /// [`g2`](Self::g2) with `wo` prepared as `view` ([`NormalDistribution::view`]), whose
+    /// `Λ(wo)` and `G1(wo)` are reused rather than evaluated again. The value is the same:
+    /// every term depends on `wo` only through `|wo.z|`, `|wo·m|` and `Λ`, which are even.
+    #[inline]
+    #[must_use]
+    pub fn g2_view<D: NormalDistribution + ?Sized>(
+        self,
+        dist: &D,
+        view: &View,
+        wi: Vec3,
+        m: Vec3,
+    ) -> f32 {
+        match self {
+            Self::HeightCorrelated => 1.0 / (1.0 + view.lambda + dist.lambda(wi)),
+            Self::Separable => view.g1 * dist.g1(wi),
+            Self::VCavity => v_cavity(view.w, wi, m),
         }
     }
 }

@@ -35,10 +35,105 @@ pub use masking::{Masking, v_cavity};
 
 use glam::{Vec2, Vec3};
 
+/// The density a distribution's [`sample`](NormalDistribution::sample) draws normals from,
+/// which fixes its [`pdf`](NormalDistribution::pdf).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Sampling {
+    /// The normals visible from the view, `D_w(m) = G1(w) max(0, w·m) D(m) / cos θw`
+    /// (Heitz & d'Eon 2014, eq. 2): the better strategy, exact where the distribution can
+    /// invert it (GGX, Beckmann).
+    VisibleNormals,
+    /// `D(m) cos θm`, which ignores the view (Walter et al. 2007, §5.3): the classic sampler,
+    /// for distributions without a visible-normal sampler (GTR, Blinn-Phong).
+    DCos,
+}
+
+/// What a distribution computes once about a direction `w` and reuses for every normal it
+/// evaluates or draws against it: a model prepares one for `wo` per shading point.
+///
+/// Built by [`NormalDistribution::view`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct View {
+    /// The direction turned into the upper hemisphere ([`upper`]).
+    pub w: Vec3,
+    /// Smith's `Λ(w)`.
+    pub lambda: f32,
+    /// Smith's `G1(w) = 1 / (1 + Λ(w))`.
+    pub g1: f32,
+    /// `G1(w) / cos θw`, the view's factor in the visible-normal density; `0` for a tangent
+    /// `w`. It has a finite limit at grazing, so it is kept rather than the two factors.
+    pub visible: f32,
+    /// Room for what the distribution's own sampler keeps about `w` ([`Ggx`]: its stretched
+    /// view and bounded cap), written and read by the distribution alone; zero otherwise.
+    pub extra: [f32; 5],
+}
+
+impl View {
+    /// The density of the normals visible from the view, given `d = D(m)`:
+    /// `D_w(m) = G1(w) max(0, w·m) D(m) / cos θw` (Heitz & d'Eon 2014, eq. 2).
+    #[inline]
+    #[must_use]
+    pub fn visible_density(&self, m: Vec3, d: f32) -> f32 {
+        let wm = self.w.dot(m);
+        if wm > 0.0 { self.visible * wm * d } else { 0.0 }
+    }
+}
+
 /// A microfacet normal distribution with Smith masking.
 ///
 /// Directions are local (`z` the macro-surface normal) and unit length. `m` is a
 /// microfacet normal; `w` a direction away from the surface.
+///
+/// **What an implementation writes.** `D` ([`d`](Self::d)), Smith's `Λ`
+/// ([`lambda`](Self::lambda)), a sampler of normals ([`sample`](Self::sample)) and which
+/// density it draws from ([`sampling`](Self::sampling)); `Extra = ()` unless the sampler keeps
+/// per-view state. Everything else — `G1`, `G2`, the visible normals, the sampler's density —
+/// follows, and the crate's models ([`Microfacet`](crate::bxdf::Microfacet),
+/// [`RoughDielectric`](crate::bxdf::RoughDielectric), [`Plastic`](crate::bxdf::Plastic)) are
+/// then correct and fast for it: they prepare a [`View`] of `wo` once and evaluate `D` once
+/// per direction.
+///
+/// **The prepared view.** Everything that depends on the direction alone (`Λ(w)`, `G1(w)`,
+/// the visible-normal factor, the sampler's set-up) is computed once by [`view`](Self::view)
+/// and passed to [`sample`](Self::sample) and [`pdf`](Self::pdf); the densities take `D(m)`
+/// from the caller, who has evaluated it for the value already.
+///
+/// A distribution of your own, with `D`, `Λ` and a sampler only (here the uniform
+/// distribution `D = 1/π`, whose Smith `Λ(w) = (1 − cos θ)/(2 cos θ)` follows from its projected
+/// area `(1 + cos θ)/2`), checked like the crate's own:
+///
+/// ```
+/// use lobe::microfacet::{NormalDistribution, Sampling, View};
+/// use lobe::sampling::cosine_hemisphere;
+/// use lobe::{Vec2, Vec3};
+///
+/// struct Uniform;
+///
+/// impl NormalDistribution for Uniform {
+///     fn sampling(&self) -> Sampling {
+///         Sampling::DCos
+///     }
+///     fn d(&self, m: Vec3) -> f32 {
+///         if m.z > 0.0 { core::f32::consts::FRAC_1_PI } else { 0.0 }
+///     }
+///     fn lambda(&self, w: Vec3) -> f32 {
+///         let c = w.z.abs();
+///         (1.0 - c) / (2.0 * c)
+///     }
+///     fn sample(&self, _view: &View, u: Vec2) -> Vec3 {
+///         cosine_hemisphere(u) // density D(m) cos θm = cos θm / π
+///     }
+/// }
+///
+/// let uniform = Uniform;
+/// let wo = Vec3::new(0.6, 0.0, 0.8);
+/// let view = uniform.view(wo);
+/// let m = uniform.sample(&view, Vec2::new(0.3, 0.6));
+/// assert!((uniform.pdf(&view, m, uniform.d(m)) - m.z / core::f32::consts::PI).abs() < 1e-6);
+/// ```
+///
+/// `lobe::verify::check_ndf` runs the laws of a distribution on it (normalisation, projected
+/// area, visible normals, the sampler against its density).
 pub trait NormalDistribution {
     /// The distribution of normals `D(m)`, normalised so that `∫ D(m) cos θm dωm = 1`;
     /// zero for `m.z ≤ 0`.
@@ -51,6 +146,17 @@ pub trait NormalDistribution {
     /// normal, `+∞` in the tangent plane.
     #[must_use]
     fn lambda(&self, w: Vec3) -> f32;
+
+    /// The density [`sample`](Self::sample) draws from.
+    #[must_use]
+    fn sampling(&self) -> Sampling;
+
+    /// Draws a microfacet normal for the view `view` with the density named by
+    /// [`sampling`](Self::sampling), `u` uniform in `[0, 1)²`. Always returns a unit vector
+    /// with `m.z ≥ 0`. The view's `w` is above the horizon ([`upper`]): a refracting model
+    /// sees the surface from either side.
+    #[must_use]
+    fn sample(&self, view: &View, u: Vec2) -> Vec3;
 
     /// Smith's masking function `G1(w) = 1 / (1 + Λ(w))`, without the microfacet-side
     /// factor `χ⁺(w·m)`, which the caller applies.
@@ -76,77 +182,87 @@ pub trait NormalDistribution {
         self.g1(wo) * self.g1(wi)
     }
 
+    /// The view of `w`: what the densities and the sampler need about it, computed once.
+    /// `w` below the horizon is first replaced by `−w` ([`upper`]).
+    #[inline]
+    #[must_use]
+    fn view(&self, w: Vec3) -> View {
+        let w = upper(w);
+        let lambda = self.lambda(w);
+        let g1 = self.g1(w);
+        View {
+            w,
+            lambda,
+            g1,
+            visible: if w.z > 0.0 { g1 / w.z } else { 0.0 },
+            extra: [0.0; 5],
+        }
+    }
+
     /// The distribution of normals visible from `w` (Heitz & d'Eon 2014, eq. 2):
     /// `D_w(m) = G1(w) max(0, w·m) D(m) / cos θw`, a density in `m` that integrates to 1.
     ///
     /// `w` below the horizon is first replaced by `−w` ([`upper`]), the convention of
-    /// [`sample`](Self::sample): a refracting model sees the surface from either side.
-    #[must_use]
-    fn d_visible(&self, w: Vec3, m: Vec3) -> f32 {
-        self.d_visible_given_d(w, m, self.d(m))
-    }
-
-    /// [`d_visible`](Self::d_visible) when `d = D(m)` is already known: a model that has
-    /// evaluated `D` for its value passes it here instead of evaluating it again.
-    #[must_use]
-    fn d_visible_given_d(&self, w: Vec3, m: Vec3, d: f32) -> f32 {
-        let w = upper(w);
-        let wm = w.dot(m);
-        if !(w.z > 0.0 && wm > 0.0) || d == 0.0 {
-            return 0.0;
-        }
-        // G1/cos θ has a finite limit at grazing; keep the product in that order.
-        self.g1(w) / w.z * wm * d
-    }
-
-    /// Draws a microfacet normal with the distribution's own sampler, with density
-    /// [`pdf`](Self::pdf) in solid angle of `m`: the visible normals `D_w(m)` where the
-    /// distribution can sample them, `D(m) cos θm` otherwise.
-    ///
-    /// `u` is uniform in `[0, 1)²`. `w` below the horizon is replaced by `−w` as in
-    /// [`d_visible`](Self::d_visible). Always returns a unit vector with `m.z ≥ 0`.
-    #[must_use]
-    fn sample(&self, w: Vec3, u: Vec2) -> Vec3;
-
-    /// The density of [`sample`](Self::sample), in solid angle of `m`.
-    #[must_use]
-    fn pdf(&self, w: Vec3, m: Vec3) -> f32;
-
-    /// [`pdf`](Self::pdf) when `d = D(m)` is already known. The default evaluates `pdf`
-    /// (and so `D`) again; the crate's distributions use `d`.
+    /// [`view`](Self::view). (A model holds a view and calls [`View::visible_density`].)
     #[inline]
     #[must_use]
-    fn pdf_given_d(&self, w: Vec3, m: Vec3, d: f32) -> f32 {
-        let _ = d;
-        self.pdf(w, m)
+    fn d_visible(&self, w: Vec3, m: Vec3) -> f32 {
+        self.view(w).visible_density(m, self.d(m))
     }
 
-    /// Draws a normal for *reflecting* `w` (`w` above the surface), with density
-    /// [`pdf_reflection`](Self::pdf_reflection). The default is [`sample`](Self::sample);
-    /// a distribution may instead skip normals that would reflect `w` below the horizon
+    /// The density of [`sample`](Self::sample) at `m`, in solid angle of `m`, given
+    /// `d = D(m)` (which the caller has evaluated for its value already): the visible normals
+    /// [`View::visible_density`] or `D(m) max(0, cos θm)`, as [`sampling`](Self::sampling) says.
+    #[inline]
+    #[must_use]
+    fn pdf(&self, view: &View, m: Vec3, d: f32) -> f32 {
+        match self.sampling() {
+            Sampling::VisibleNormals => view.visible_density(m, d),
+            Sampling::DCos => d * m.z.max(0.0),
+        }
+    }
+
+    /// Draws a normal for *reflecting* the view's `w`, with density
+    /// [`pdf_reflection`](Self::pdf_reflection). The default is [`sample`](Self::sample); a
+    /// distribution may instead skip normals that would reflect `w` below the horizon
     /// ([`Ggx`] uses Eto & Tokuyoshi's bounded sampler).
     #[inline]
     #[must_use]
-    fn sample_reflection(&self, w: Vec3, u: Vec2) -> Vec3 {
-        self.sample(w, u)
+    fn sample_reflection(&self, view: &View, u: Vec2) -> Vec3 {
+        self.sample(view, u)
     }
 
-    /// The density of [`sample_reflection`](Self::sample_reflection), in solid angle of `m`.
+    /// The density, in solid angle of `wi`, of the direction `wi = 2 (w·m) m − w` reflected
+    /// about a normal `m` drawn by [`sample_reflection`](Self::sample_reflection), given
+    /// `d = D(m)`: the normal's density times the reflection's Jacobian `1 / (4 w·m)` (Walter
+    /// et al. 2007, eq. 14), for an `m` that reflects the view's `w` *above* the horizon — the
+    /// only normals for which a reflection model has a value. (A bounded sampler's density of
+    /// normals that reflect below can be zero where this is not: [`Ggx::d_visible_bounded`]
+    /// is exact everywhere.)
+    ///
+    /// For visible normals the `w·m` of the density cancels the Jacobian's:
+    /// `D_w(m) / (4 w·m) = G1(w) D(m) / (4 cos θw)`.
     #[inline]
     #[must_use]
-    fn pdf_reflection(&self, w: Vec3, m: Vec3) -> f32 {
-        self.pdf(w, m)
+    fn pdf_reflection(&self, view: &View, m: Vec3, d: f32) -> f32 {
+        let wm = view.w.dot(m);
+        if !(wm > 0.0) {
+            return 0.0;
+        }
+        match self.sampling() {
+            Sampling::VisibleNormals => 0.25 * view.visible * d,
+            Sampling::DCos => d * m.z.max(0.0) / (4.0 * wm),
+        }
     }
+}
 
-    /// [`pdf_reflection`](Self::pdf_reflection) when `d = D(m)` is already known.
-    #[inline]
-    #[must_use]
-    fn pdf_reflection_given_d(&self, w: Vec3, m: Vec3, d: f32) -> f32 {
-        self.pdf_given_d(w, m, d)
-    }
-
-    /// Draws a microfacet normal with density `D(m) cos θm` (the classic sampler of Walter
-    /// et al. 2007, §5.3, eq. 28's density), `u` uniform in `[0, 1)²`.
+/// A distribution that can draw normals with density `D(m) cos θm`, the classic sampler of
+/// Walter et al. (2007, §5.3), which ignores the view. The distributions without a
+/// visible-normal sampler use it as their [`sample`](NormalDistribution::sample); for GGX and
+/// Beckmann it is the alternative the visible normals improve on.
+pub trait SampleDCos: NormalDistribution {
+    /// Draws a microfacet normal with density [`pdf_d_cos`](Self::pdf_d_cos), `u` uniform in
+    /// `[0, 1)²`.
     #[must_use]
     fn sample_d_cos(&self, u: Vec2) -> Vec3;
 
@@ -156,14 +272,6 @@ pub trait NormalDistribution {
     fn pdf_d_cos(&self, m: Vec3) -> f32 {
         self.d(m) * m.z.max(0.0)
     }
-}
-
-/// A distribution that can draw its visible normals exactly.
-pub trait VisibleNormals: NormalDistribution {
-    /// Draws `m` with density [`d_visible(w, m)`](NormalDistribution::d_visible), `u`
-    /// uniform in `[0, 1)²`; `w` below the horizon is replaced by `−w` ([`upper`]).
-    #[must_use]
-    fn sample_visible(&self, w: Vec3, u: Vec2) -> Vec3;
 }
 
 /// `w` turned into the upper hemisphere: `−w` when `w.z < 0`, else `w`.

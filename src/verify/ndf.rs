@@ -302,9 +302,10 @@ pub fn check_ndf<D: NormalDistribution + ?Sized>(
             significance,
             ..Chi2Config::default()
         };
+        let view = dist.view(w);
         let r = chi2_normals(
-            |u| dist.sample(w, u),
-            |m| f64::from(dist.pdf(w, m)),
+            |u| dist.sample(&view, u),
+            |m| f64::from(dist.pdf(&view, m, dist.d(m))),
             config.check.stretch,
             &chi,
         );

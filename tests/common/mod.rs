@@ -1,6 +1,7 @@
 //! Helpers shared by the integration tests.
 #![allow(dead_code)]
 
+pub mod buggy_ggx;
 pub mod laws;
 pub mod quadrature;
 pub mod reference;
