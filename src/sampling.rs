@@ -29,8 +29,10 @@
 //! assert!((cosine_hemisphere_inverse(w) - u).length() < 1e-5);
 //! ```
 
-use crate::math::{atan, atan2, copysign, exp, exp_m1, ln, safe_sqrt, sin_cos};
-use core::f32::consts::{FRAC_1_PI, FRAC_PI_2, FRAC_PI_4, TAU};
+use crate::math::{
+    atan, atan2, copysign, exp, exp_m1, ln, safe_sqrt, sin_cos_octant, sin_cos_turns,
+};
+use core::f32::consts::{FRAC_1_PI, FRAC_PI_4, TAU};
 use glam::{Vec2, Vec3};
 
 /// `1 / (2π)`, the density of the uniform hemisphere.
@@ -58,17 +60,20 @@ fn turn_fraction(y: f32, x: f32) -> f32 {
 pub fn square_to_disk_concentric(u: Vec2) -> Vec2 {
     let a = 2.0 * u.x - 1.0;
     let b = 2.0 * u.y - 1.0;
-    if a == 0.0 && b == 0.0 {
-        return Vec2::ZERO;
-    }
     // A negative radius flips the point through the origin, which covers the left and
-    // lower quarters of the square with the same two formulas.
-    let (r, phi) = if a.abs() > b.abs() {
-        (a, FRAC_PI_4 * (b / a))
+    // lower quarters of the square with the same two formulas. Written with selects rather
+    // than branches: which sector a point falls in is as random as the point.
+    let wide = a.abs() > b.abs();
+    let (r, other) = if wide { (a, b) } else { (b, a) };
+    // The centre (r = 0) maps to the centre, at any angle.
+    let ratio = if r == 0.0 { 0.0 } else { other / r };
+    // φ = ψ = (π/4) b/a, or φ = π/2 − ψ with ψ = (π/4) a/b, whose sine and cosine swap.
+    let (sin_psi, cos_psi) = sin_cos_octant(FRAC_PI_4 * ratio);
+    let (s, c) = if wide {
+        (sin_psi, cos_psi)
     } else {
-        (b, FRAC_PI_2 - FRAC_PI_4 * (a / b))
+        (cos_psi, sin_psi)
     };
-    let (s, c) = sin_cos(phi);
     Vec2::new(r * c, r * s)
 }
 
@@ -140,7 +145,7 @@ pub fn cosine_power_hemisphere(u: Vec2, n: f32) -> Vec3 {
     let l = ln(u.x.max(f32::MIN_POSITIVE)) / (n + 1.0);
     let cos = exp(l);
     let sin = safe_sqrt(-exp_m1(2.0 * l));
-    let (s, c) = sin_cos(TAU * u.y);
+    let (s, c) = sin_cos_turns(u.y);
     Vec3::new(sin * c, sin * s, cos)
 }
 
@@ -164,7 +169,7 @@ pub fn cosine_power_hemisphere_pdf(cos_theta: f32, n: f32) -> f32 {
 pub fn uniform_hemisphere(u: Vec2) -> Vec3 {
     let z = u.x;
     let r = safe_sqrt((1.0 - z) * (1.0 + z));
-    let (s, c) = sin_cos(TAU * u.y);
+    let (s, c) = sin_cos_turns(u.y);
     Vec3::new(r * c, r * s, z)
 }
 
@@ -195,7 +200,7 @@ pub fn uniform_hemisphere_inverse(w: Vec3) -> Vec2 {
 pub fn uniform_sphere(u: Vec2) -> Vec3 {
     let z = 1.0 - 2.0 * u.x;
     let r = 2.0 * safe_sqrt(u.x * (1.0 - u.x));
-    let (s, c) = sin_cos(TAU * u.y);
+    let (s, c) = sin_cos_turns(u.y);
     Vec3::new(r * c, r * s, z)
 }
 
@@ -228,7 +233,7 @@ pub fn uniform_cone(u: Vec2, cos_theta_max: f32) -> Vec3 {
     let one_minus_cos = u.x * (1.0 - cos_theta_max);
     let cos_theta = 1.0 - one_minus_cos;
     let sin_theta = safe_sqrt(one_minus_cos * (2.0 - one_minus_cos));
-    let (s, c) = sin_cos(TAU * u.y);
+    let (s, c) = sin_cos_turns(u.y);
     Vec3::new(sin_theta * c, sin_theta * s, cos_theta)
 }
 

@@ -77,9 +77,10 @@ impl<D: NormalDistribution, F: Fresnel> Microfacet<D, F> {
         &self.distribution
     }
 
-    /// `f` for `wo`, `wi` above the surface, their unit half vector `h` and `d = D(h)`.
+    /// `f` for `wo`, `wi` above the surface, their sum `s = wo + wi` (the half vector
+    /// before normalising) with `s2 = |s|²`, and `d = D(s/|s|)`.
     #[inline]
-    fn value(&self, at: &At<View>, wi: Vec3, h: Vec3, d: f32) -> F::Spectrum {
+    fn value(&self, at: &At<View>, wi: Vec3, s: Vec3, s2: f32, d: f32) -> F::Spectrum {
         let wo = at.wo;
         // A product of cosines that underflows (subnormal cos θ) would divide 0 by 0: the
         // light there is grazing to within 1e-38 and contributes nothing.
@@ -87,28 +88,33 @@ impl<D: NormalDistribution, F: Fresnel> Microfacet<D, F> {
         if d == 0.0 || !(cos2 > 0.0) {
             return F::Spectrum::zero();
         }
-        let g = self.masking.g2_view(&self.distribution, &at.state, wi, h);
+        // G2 / (4 cos θo cos θi); the V-cavity term takes the normal's direction from s.
+        let v = self
+            .masking
+            .visibility(&self.distribution, &at.state, wi, s);
         // Finite even where the V-cavity term keeps G = 1 for a grazing mirror pair of a very
         // narrow lobe, where D / (4 cos θo cos θi) exceeds f32.
-        let scale = (d * g / (4.0 * cos2)).min(f32::MAX);
-        self.fresnel.eval(wo.dot(h)) * scale
+        let scale = (d * v).min(f32::MAX);
+        // wo·h = (1 + wo·wi)/|s| = |s|/2 for unit directions.
+        self.fresnel.eval(0.5 * crate::math::sqrt(s2)) * scale
     }
 
     /// The density of `wi` reflected about a normal drawn from the distribution, at their
-    /// half vector `h` with `d = D(h)`: the normal's density times `1/(4 wo·h)`.
+    /// sum `s` with `d = D(s/|s|)`: the normal's density times `1/(4 wo·h)`.
     #[inline]
-    fn density(&self, at: &At<View>, h: Vec3, d: f32) -> f32 {
-        self.distribution.pdf_reflection(&at.state, h, d)
+    fn density(&self, at: &At<View>, s: Vec3, d: f32) -> f32 {
+        self.distribution.pdf_reflection(&at.state, s, d)
     }
 
-    /// The half vector of a pair above the surface, or `None`.
+    /// `(s, |s|², D(s/|s|))` for `s = wo + wi` of a pair above the surface, or `None`.
     #[inline]
-    fn half_above(at: &At<View>, wi: Vec3) -> Option<Vec3> {
-        if both_above(at.wo, wi) {
-            half_vector(at.wo, wi)
-        } else {
-            None
+    fn half_above(&self, at: &At<View>, wi: Vec3) -> Option<(Vec3, f32, f32)> {
+        if !both_above(at.wo, wi) {
+            return None;
         }
+        let s = at.wo + wi;
+        let s2 = s.length_squared();
+        (s2 > 0.0).then(|| (s, s2, self.distribution.d_unnormalized(s, s2)))
     }
 }
 
@@ -116,7 +122,7 @@ impl<D: NormalDistribution, F: Fresnel> Prepare for Microfacet<D, F> {
     type Spectrum = F::Spectrum;
     type Prepared = At<View>;
 
-    #[inline]
+    #[inline(always)]
     fn prepare(&self, wo: Vec3) -> Self::Prepared {
         At {
             wo,
@@ -124,26 +130,24 @@ impl<D: NormalDistribution, F: Fresnel> Prepare for Microfacet<D, F> {
         }
     }
 
-    #[inline]
+    #[inline(always)]
     fn eval_prepared(&self, at: &Self::Prepared, wi: Vec3) -> F::Spectrum {
-        match Self::half_above(at, wi) {
-            Some(h) => self.value(at, wi, h, self.distribution.d(h)),
+        match self.half_above(at, wi) {
+            Some((s, s2, d)) => self.value(at, wi, s, s2, d),
             None => F::Spectrum::zero(),
         }
     }
 
-    #[inline]
+    #[inline(always)]
     fn pdf_prepared(&self, at: &Self::Prepared, wi: Vec3) -> f32 {
-        Self::half_above(at, wi).map_or(0.0, |h| self.density(at, h, self.distribution.d(h)))
+        self.half_above(at, wi)
+            .map_or(0.0, |(s, _, d)| self.density(at, s, d))
     }
 
-    #[inline]
+    #[inline(always)]
     fn eval_pdf_prepared(&self, at: &Self::Prepared, wi: Vec3) -> (F::Spectrum, f32) {
-        match Self::half_above(at, wi) {
-            Some(h) => {
-                let d = self.distribution.d(h);
-                (self.value(at, wi, h, d), self.density(at, h, d))
-            }
+        match self.half_above(at, wi) {
+            Some((s, s2, d)) => (self.value(at, wi, s, s2, d), self.density(at, s, d)),
             None => (F::Spectrum::zero(), 0.0),
         }
     }
@@ -155,28 +159,22 @@ impl<D: NormalDistribution, F: Fresnel> Prepare for Microfacet<D, F> {
         u: Vec2,
         _uc: f32,
     ) -> Option<BxdfSample<F::Spectrum>> {
-        let wo = at.wo;
-        if !(wo.z > 0.0) {
+        if !(at.wo.z > 0.0) {
             return None;
         }
         let m = self.distribution.sample_reflection(&at.state, u);
-        let wi = reflect(wo, m);
-        if !(wi.z > 0.0) {
-            return None;
-        }
-        // Evaluate at the half vector of (wo, wi), as `eval` and `pdf` do, rather than at
-        // `m`: the two differ by rounding, and a renderer's MIS needs `pdf` to reproduce
-        // the sample's density exactly.
-        let h = half_vector(wo, wi)?;
-        // D once, for both the value and the density.
-        let d = self.distribution.d(h);
-        let pdf = self.density(at, h, d);
+        let wi = reflect(at.wo, m);
+        // Evaluate at wo + wi, as `eval` and `pdf` do, rather than at `m`: the two differ by
+        // rounding, and a renderer's MIS needs `pdf` to reproduce the sample's density
+        // exactly. D once, for both the value and the density.
+        let (s, s2, d) = self.half_above(at, wi)?;
+        let pdf = self.density(at, s, d);
         if !(pdf > 0.0 && pdf.is_finite()) {
             return None;
         }
         Some(BxdfSample {
             wi,
-            f: self.value(at, wi, h, d),
+            f: self.value(at, wi, s, s2, d),
             pdf,
             lobe: Lobes::GLOSSY_REFLECTION,
             eta: 1.0,
@@ -186,18 +184,5 @@ impl<D: NormalDistribution, F: Fresnel> Prepare for Microfacet<D, F> {
     #[inline]
     fn lobes(&self) -> Lobes {
         Lobes::GLOSSY_REFLECTION
-    }
-}
-
-/// The unit half vector of two directions on the same side, or `None` when they are
-/// opposite (their sum vanishes).
-#[inline]
-pub(crate) fn half_vector(wo: Vec3, wi: Vec3) -> Option<Vec3> {
-    let h = wo + wi;
-    let len2 = h.length_squared();
-    if len2 > 0.0 {
-        Some(h / crate::math::sqrt(len2))
-    } else {
-        None
     }
 }

@@ -134,7 +134,7 @@ impl<D: NormalDistribution, S: Spectrum> Prepare for Plastic<D, S> {
     type Spectrum = S;
     type Prepared = At<PlasticState<<Microfacet<D, Dielectric> as Prepare>::Prepared>>;
 
-    #[inline]
+    #[inline(always)]
     fn prepare(&self, wo: Vec3) -> Self::Prepared {
         let e = self.coat_albedo_at(wo.z);
         At {
@@ -147,7 +147,7 @@ impl<D: NormalDistribution, S: Spectrum> Prepare for Plastic<D, S> {
         }
     }
 
-    #[inline]
+    #[inline(always)]
     fn eval_prepared(&self, at: &Self::Prepared, wi: Vec3) -> S {
         if !both_above(at.wo, wi) {
             return S::zero();
@@ -156,7 +156,7 @@ impl<D: NormalDistribution, S: Spectrum> Prepare for Plastic<D, S> {
         S::splat(self.coat.eval_prepared(&st.coat, wi)) + self.diffuse(st.t_o, wi)
     }
 
-    #[inline]
+    #[inline(always)]
     fn pdf_prepared(&self, at: &Self::Prepared, wi: Vec3) -> f32 {
         if !both_above(at.wo, wi) {
             return 0.0;
@@ -166,7 +166,7 @@ impl<D: NormalDistribution, S: Spectrum> Prepare for Plastic<D, S> {
             + (1.0 - st.p_coat) * cosine_hemisphere_pdf(wi.z)
     }
 
-    #[inline]
+    #[inline(always)]
     fn eval_pdf_prepared(&self, at: &Self::Prepared, wi: Vec3) -> (S, f32) {
         if !both_above(at.wo, wi) {
             return (S::zero(), 0.0);

@@ -150,18 +150,18 @@ impl<D: NormalDistribution> RoughDielectric<D> {
             return 0.0;
         }
         let wo = at.wo;
-        let g = self.masking.g2_view(&self.distribution, &at.state, wi, c.h);
+        // G2 / (4 |cos θo cos θi|).
+        let v = self
+            .masking
+            .visibility(&self.distribution, &at.state, wi, c.h);
         if c.reflection {
-            (fresnel() * d * g / (4.0 * wo.z * wi.z))
-                .abs()
-                .min(f32::MAX)
+            (fresnel() * d * v).min(f32::MAX)
         } else {
             // Fresnel from both cosines: symmetric in wo and wi, so f is reciprocal to
             // round-off even at the critical angle, where Snell's cos θt cancels.
             let (woh, wih) = (wo.dot(c.h), wi.dot(c.h));
             let f = dielectric_refracted(woh, wih, c.etap);
-            let t =
-                ((1.0 - f) * d * g * (wih * woh / (wi.z * wo.z * c.denom2)).abs()).min(f32::MAX);
+            let t = ((1.0 - f) * d * 4.0 * v * (wih * woh / c.denom2).abs()).min(f32::MAX);
             match self.mode {
                 TransportMode::Radiance => t / (c.etap * c.etap),
                 TransportMode::Importance => t,
@@ -200,7 +200,7 @@ impl<D: NormalDistribution> Prepare for RoughDielectric<D> {
     type Prepared = At<View>;
 
     /// `wo` and the distribution's view of it (of `−wo` from the inside).
-    #[inline]
+    #[inline(always)]
     fn prepare(&self, wo: Vec3) -> Self::Prepared {
         At {
             wo,
@@ -208,7 +208,7 @@ impl<D: NormalDistribution> Prepare for RoughDielectric<D> {
         }
     }
 
-    #[inline]
+    #[inline(always)]
     fn eval_prepared(&self, at: &Self::Prepared, wi: Vec3) -> f32 {
         self.configuration(at.wo, wi).map_or(0.0, |c| {
             let d = self.distribution.d(c.h);
@@ -216,7 +216,7 @@ impl<D: NormalDistribution> Prepare for RoughDielectric<D> {
         })
     }
 
-    #[inline]
+    #[inline(always)]
     fn pdf_prepared(&self, at: &Self::Prepared, wi: Vec3) -> f32 {
         self.configuration(at.wo, wi).map_or(0.0, |c| {
             let (d, f) = (self.distribution.d(c.h), self.fresnel(at.wo, &c));
@@ -224,7 +224,7 @@ impl<D: NormalDistribution> Prepare for RoughDielectric<D> {
         })
     }
 
-    #[inline]
+    #[inline(always)]
     fn eval_pdf_prepared(&self, at: &Self::Prepared, wi: Vec3) -> (f32, f32) {
         self.configuration(at.wo, wi).map_or((0.0, 0.0), |c| {
             let (d, f) = (self.distribution.d(c.h), self.fresnel(at.wo, &c));

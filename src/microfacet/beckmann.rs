@@ -1,9 +1,9 @@
 //! The Beckmann distribution, anisotropic, with exact Smith masking or Walter's rational fit.
 
 use super::{NormalDistribution, SampleDCos, Sampling, View};
-use crate::math::{erf_inv, erfc, exp, ln, ln_1p, sin_cos, sqrt};
+use crate::math::{erf_inv, erfc, exp, ln, ln_1p, sin_cos_turns, sqrt};
 use crate::param::Alpha;
-use core::f32::consts::{FRAC_1_PI, TAU};
+use core::f32::consts::FRAC_1_PI;
 use glam::{Vec2, Vec3};
 
 /// `1/√π`.
@@ -190,7 +190,7 @@ impl SampleDCos for Beckmann {
     #[inline]
     fn sample_d_cos(&self, u: Vec2) -> Vec3 {
         let r = sqrt(-ln_1p(-u.x.min(1.0 - f32::EPSILON / 2.0)));
-        let (s, c) = sin_cos(TAU * u.y);
+        let (s, c) = sin_cos_turns(u.y);
         Vec3::new(-self.ax * r * c, -self.ay * r * s, 1.0).normalize_or(Vec3::Z)
     }
 }

@@ -1,9 +1,9 @@
 //! The GGX (Trowbridge-Reitz) distribution, anisotropic.
 
 use super::{NormalDistribution, SampleDCos, Sampling, View, upper};
-use crate::math::{safe_sqrt, sin_cos, sqrt};
+use crate::math::{safe_sqrt, sin_cos_turns, sqrt};
 use crate::param::Alpha;
-use core::f32::consts::{FRAC_1_PI, TAU};
+use core::f32::consts::FRAC_1_PI;
 use glam::{Vec2, Vec3};
 
 /// The GGX / Trowbridge-Reitz distribution of microfacet normals, with widths `αx`, `αy`
@@ -121,7 +121,7 @@ impl Ggx {
     fn sample_cap(&self, wh: Vec3, b: f32, u: Vec2) -> Vec3 {
         let z = (1.0 - u.y) * (1.0 + b) - b;
         let r = safe_sqrt(1.0 - z * z);
-        let (s, c) = sin_cos(TAU * u.x);
+        let (s, c) = sin_cos_turns(u.x);
         self.unstretch(Vec3::new(r * c, r * s, z) + wh)
     }
 
@@ -186,7 +186,8 @@ impl Ggx {
 /// reflection density's factor (`extra[4]`): the bounded sampler's density of a normal that
 /// reflects above the horizon is `extra[4] · (w·m) · D(m)` with
 /// `extra[4] = G1/cos θ · (1 + wh.z)/(1 + b)`, that is `2 / (|(αx wx, αy wy, wz)| + k wz)`
-/// (Eto & Tokuyoshi 2023, eq. 7).
+/// (Eto & Tokuyoshi 2023, eq. 7); and `L = |(αx wx, αy wy, wz)|` (`extra[5]`), with which
+/// `1 + Λ = (L/|wz| + 1)/2`.
 #[inline]
 fn stretched_view(view: &View) -> Vec3 {
     Vec3::new(view.extra[0], view.extra[1], view.extra[2])
@@ -208,6 +209,18 @@ impl NormalDistribution for Ggx {
         self.norm / (t * t)
     }
 
+    /// `t(s) = (sx/αx)² + (sy/αy)² + sz²` is homogeneous of degree 2, so
+    /// `D(s/|s|) = c / (t(s)/|s|²)²`: one division and no square root.
+    #[inline]
+    fn d_unnormalized(&self, s: Vec3, s2: f32) -> f32 {
+        if !(s.z > 0.0) {
+            return 0.0;
+        }
+        let (x, y) = (s.x * self.inv_ax, s.y * self.inv_ay);
+        let q = s2 / (x * x + y * y + s.z * s.z);
+        self.norm * q * q
+    }
+
     #[inline]
     fn lambda(&self, w: Vec3) -> f32 {
         lambda(self.stretched_xy(w).2, w.z)
@@ -219,9 +232,9 @@ impl NormalDistribution for Ggx {
         g1(sqrt(self.stretched_xy(w).2 + z * z), z)
     }
 
-    /// Λ, G1, the visible-normal factor `2 / (wz + |(αx wx, αy wy, wz)|)`, the stretched
+    /// Λ, the visible-normal factor `2 / (wz + |(αx wx, αy wy, wz)|)`, the stretched
     /// view and the bounded cap, sharing the one square root `|(αx wx, αy wy, wz)|`.
-    #[inline]
+    #[inline(always)]
     fn view(&self, w: Vec3) -> View {
         let w = upper(w);
         let (x, y, s) = self.stretched_xy(w);
@@ -236,10 +249,11 @@ impl NormalDistribution for Ggx {
         };
         View {
             w,
-            lambda: lambda(s, w.z),
-            g1: g1(len, w.z),
+            // 1 + Λ = (L/wz + 1)/2 (Heitz 2014, eq. 86): as precise as 1 + Λ needs, for one
+            // division ([`lambda`](NormalDistribution::lambda) keeps Λ's own digits).
+            lambda: 0.5 * (len / w.z - 1.0),
             visible,
-            extra: [wh.x, wh.y, wh.z, cap, reflection],
+            extra: [wh.x, wh.y, wh.z, cap, reflection, len],
         }
     }
 
@@ -255,6 +269,16 @@ impl NormalDistribution for Ggx {
     #[inline]
     fn sample_reflection(&self, view: &View, u: Vec2) -> Vec3 {
         self.sample_cap(stretched_view(view), view.extra[3], u)
+    }
+
+    /// With `1 + Λ(w) = (L/|wz| + 1)/2` (Heitz 2014, eq. 86), `1 + Λo + Λi` is
+    /// `(Lo |zi| + Li |zo|) / (2 |zo zi|)` and `V = G2 / (4 |zo zi|) = 1 / (2 (Lo |zi| + Li |zo|))`:
+    /// one square root and one division for the pair.
+    #[inline]
+    fn visibility(&self, view: &View, wi: Vec3) -> f32 {
+        let zi = wi.z.abs();
+        let li = sqrt(self.stretched_xy(wi).2 + zi * zi);
+        0.5 / (view.extra[5] * zi + li * view.w.z)
     }
 
     #[inline]
@@ -273,7 +297,7 @@ impl SampleDCos for Ggx {
     #[inline]
     fn sample_d_cos(&self, u: Vec2) -> Vec3 {
         let r = sqrt(u.x / (1.0 - u.x).max(f32::MIN_POSITIVE));
-        let (s, c) = sin_cos(TAU * u.y);
+        let (s, c) = sin_cos_turns(u.y);
         Vec3::new(-self.ax * r * c, -self.ay * r * s, 1.0).normalize_or(Vec3::X)
     }
 }

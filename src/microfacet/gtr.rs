@@ -2,9 +2,9 @@
 
 use super::smith_table::SmithTable;
 use super::{NormalDistribution, SampleDCos, Sampling, View};
-use crate::math::{exp, exp_m1, ln, ln_1p, safe_sqrt, sin_cos, sqrt};
+use crate::math::{exp, exp_m1, ln, ln_1p, safe_sqrt, sin_cos_turns, sqrt};
 use crate::param::{Alpha, ParamError};
-use core::f32::consts::{PI, TAU};
+use core::f32::consts::PI;
 use glam::{Vec2, Vec3};
 
 /// Burley's generalised Trowbridge-Reitz distribution (isotropic):
@@ -207,7 +207,7 @@ impl SampleDCos for Gtr {
     fn sample_d_cos(&self, u: Vec2) -> Vec3 {
         let cos2 = self.shape.sample_cos2(u.x);
         let sin = sqrt(1.0 - cos2);
-        let (s, c) = sin_cos(TAU * u.y);
+        let (s, c) = sin_cos_turns(u.y);
         Vec3::new(sin * c, sin * s, sqrt(cos2))
     }
 }

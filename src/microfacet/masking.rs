@@ -38,7 +38,7 @@ impl Masking {
     }
 
     /// [`g2`](Self::g2) with `wo` prepared as `view` ([`NormalDistribution::view`]), whose
-    /// `Λ(wo)` and `G1(wo)` are reused rather than evaluated again. The value is the same:
+    /// `Λ(wo)` is reused rather than evaluated again. The value is the same:
     /// every term depends on `wo` only through `|wo.z|`, `|wo·m|` and `Λ`, which are even.
     #[inline]
     #[must_use]
@@ -51,8 +51,26 @@ impl Masking {
     ) -> f32 {
         match self {
             Self::HeightCorrelated => 1.0 / (1.0 + view.lambda + dist.lambda(wi)),
-            Self::Separable => view.g1 * dist.g1(wi),
+            Self::Separable => dist.g1(wi) / (1.0 + view.lambda),
             Self::VCavity => v_cavity(view.w, wi, m),
+        }
+    }
+
+    /// `G2 / (4 |cos θo| |cos θi|)` with `wo` prepared as `view`: the masking-shadowing factor
+    /// of a microfacet model's value, the height-correlated one through
+    /// [`NormalDistribution::visibility`]. For `|cos θo cos θi|` above `f32::MIN_POSITIVE`.
+    #[inline]
+    #[must_use]
+    pub fn visibility<D: NormalDistribution + ?Sized>(
+        self,
+        dist: &D,
+        view: &View,
+        wi: Vec3,
+        m: Vec3,
+    ) -> f32 {
+        match self {
+            Self::HeightCorrelated => dist.visibility(view, wi),
+            _ => self.g2_view(dist, view, wi, m) / (4.0 * view.w.z * wi.z.abs()),
         }
     }
 }

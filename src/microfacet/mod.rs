@@ -56,16 +56,14 @@ pub enum Sampling {
 pub struct View {
     /// The direction turned into the upper hemisphere ([`upper`]).
     pub w: Vec3,
-    /// Smith's `Λ(w)`.
+    /// Smith's `Λ(w)` (and `G1(w) = 1 / (1 + Λ(w))`).
     pub lambda: f32,
-    /// Smith's `G1(w) = 1 / (1 + Λ(w))`.
-    pub g1: f32,
     /// `G1(w) / cos θw`, the view's factor in the visible-normal density; `0` for a tangent
     /// `w`. It has a finite limit at grazing, so it is kept rather than the two factors.
     pub visible: f32,
     /// Room for what the distribution's own sampler keeps about `w` ([`Ggx`]: its stretched
     /// view and bounded cap), written and read by the distribution alone; zero otherwise.
-    pub extra: [f32; 5],
+    pub extra: [f32; 6],
 }
 
 impl View {
@@ -93,7 +91,7 @@ impl View {
 /// then correct and fast for it: they prepare a [`View`] of `wo` once and evaluate `D` once
 /// per direction.
 ///
-/// **The prepared view.** Everything that depends on the direction alone (`Λ(w)`, `G1(w)`,
+/// **The prepared view.** Everything that depends on the direction alone (`Λ(w)`,
 /// the visible-normal factor, the sampler's set-up) is computed once by [`view`](Self::view)
 /// and passed to [`sample`](Self::sample) and [`pdf`](Self::pdf); the densities take `D(m)`
 /// from the caller, who has evaluated it for the value already.
@@ -140,6 +138,16 @@ pub trait NormalDistribution {
     #[must_use]
     fn d(&self, m: Vec3) -> f32;
 
+    /// `D` at the unit normal `s / |s|`, given a non-zero `s` with `s2 = |s|²`: what a model
+    /// holds after adding two directions, before normalising their half vector. The default
+    /// normalises; a distribution homogeneous in `m` skips the square root and the division
+    /// ([`Ggx`]: `D = c / t(s/|s|)² = c (|s|² / t(s))²`).
+    #[inline]
+    #[must_use]
+    fn d_unnormalized(&self, s: Vec3, s2: f32) -> f32 {
+        self.d(s / crate::math::sqrt(s2))
+    }
+
     /// Smith's auxiliary function `Λ(w)`, with `G1(w) = 1 / (1 + Λ(w))`.
     ///
     /// Depends on `w` only through `tan² θ` and `φ`, so `Λ(w) = Λ(x, y, −z)`. `0` along the
@@ -182,6 +190,20 @@ pub trait NormalDistribution {
         self.g1(wo) * self.g1(wi)
     }
 
+    /// The height-correlated masking-shadowing term over the model's cosines,
+    /// `V = G2(w, wi) / (4 |cos θw| |cos θi|)` with `G2 = 1 / (1 + Λ(w) + Λ(wi))` (Heitz 2014,
+    /// eq. 99), for the view's `w` and a direction `wi`: the factor of a microfacet model's
+    /// value that depends on the two directions alone (the "visibility" of real-time
+    /// renderers). For `|cos θw cos θi|` above `f32::MIN_POSITIVE`.
+    ///
+    /// A distribution with a closed-form `Λ` can fold the division into one ([`Ggx`]:
+    /// `V = 1 / (2 (Lw |cos θi| + Li |cos θw|))`, `L = |(αx x, αy y, z)|`).
+    #[inline]
+    #[must_use]
+    fn visibility(&self, view: &View, wi: Vec3) -> f32 {
+        1.0 / ((1.0 + view.lambda + self.lambda(wi)) * 4.0 * view.w.z * wi.z.abs())
+    }
+
     /// The view of `w`: what the densities and the sampler need about it, computed once.
     /// `w` below the horizon is first replaced by `−w` ([`upper`]).
     #[inline]
@@ -189,13 +211,16 @@ pub trait NormalDistribution {
     fn view(&self, w: Vec3) -> View {
         let w = upper(w);
         let lambda = self.lambda(w);
-        let g1 = self.g1(w);
         View {
             w,
             lambda,
-            g1,
-            visible: if w.z > 0.0 { g1 / w.z } else { 0.0 },
-            extra: [0.0; 5],
+            // G1/cos θ = 1 / ((1 + Λ) cos θ): finite as cos θ → 0, where Λ grows as 1/cos θ.
+            visible: if w.z > 0.0 {
+                1.0 / ((1.0 + lambda) * w.z)
+            } else {
+                0.0
+            },
+            extra: [0.0; 6],
         }
     }
 
@@ -234,7 +259,8 @@ pub trait NormalDistribution {
 
     /// The density, in solid angle of `wi`, of the direction `wi = 2 (w·m) m − w` reflected
     /// about a normal `m` drawn by [`sample_reflection`](Self::sample_reflection), given
-    /// `d = D(m)`: the normal's density times the reflection's Jacobian `1 / (4 w·m)` (Walter
+    /// `d = D(m)` (`m` may be any positive multiple of the unit normal: the density depends on
+    /// its direction only): the normal's density times the reflection's Jacobian `1 / (4 w·m)` (Walter
     /// et al. 2007, eq. 14), for an `m` that reflects the view's `w` *above* the horizon — the
     /// only normals for which a reflection model has a value. (A bounded sampler's density of
     /// normals that reflect below can be zero where this is not: [`Ggx::d_visible_bounded`]

@@ -71,11 +71,10 @@ impl NormalDistribution for BuggyNdf {
     fn view(&self, w: Vec3) -> View {
         let mut view = self.ggx.view(w);
         view.lambda = self.lambda(view.w);
-        view.g1 = self.g1(view.w);
         let g1 = if self.bug == NdfBug::VisibleWithoutG1 {
             1.0
         } else {
-            view.g1
+            self.g1(view.w)
         };
         view.visible = if view.w.z > 0.0 { g1 / view.w.z } else { 0.0 };
         view
