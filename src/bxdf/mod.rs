@@ -290,27 +290,33 @@ pub(crate) fn both_above(wo: Vec3, wi: Vec3) -> bool {
     wo.z > 0.0 && wi.z > 0.0
 }
 
-/// Closeness of two samples (feature `approx`): the directions, values, pdfs and crossed
-/// indices within the tolerance, channel by channel, and the same lobe. For comparing, say, a
-/// model's `sample` against a reference implementation's, or one build's against another's.
-///
-/// ```
-/// use approx::assert_relative_eq;
-/// use lobe::bxdf::{Bxdf, Lambert};
-/// use lobe::{Vec2, Vec3};
-///
-/// let brdf = Lambert::new(Vec3::splat(0.5))?;
-/// let wo = Vec3::new(0.0, 0.6, 0.8);
-/// let a = brdf.sample(wo, Vec2::new(0.25, 0.5), 0.5).unwrap();
-/// let b = brdf.sample(wo, Vec2::new(0.25, 0.5 + 1e-7), 0.5).unwrap();
-/// assert_relative_eq!(a, b, max_relative = 1e-5);
-/// # Ok::<(), lobe::ParamError>(())
-/// ```
+// `approx`'s AbsDiffEq and RelativeEq for BxdfSample (feature `approx`).
 #[cfg(feature = "approx")]
 mod approx_impls {
     use super::BxdfSample;
     use approx::{AbsDiffEq, RelativeEq};
 
+    /// Closeness of two samples (feature `approx`): the directions, values, pdfs and crossed
+    /// indices within the tolerance, channel by channel, and the same lobe, exactly. For
+    /// comparing a model's `sample` with a reference implementation's, or one build's with
+    /// another's. As everywhere in `approx`, a relative tolerance alone never accepts a
+    /// difference from an exact zero (a direction's component, a black channel): give an
+    /// absolute floor with `epsilon` too.
+    ///
+    /// ```
+    /// use approx::assert_relative_eq;
+    /// use lobe::bxdf::{Bxdf, Lambert};
+    /// use lobe::{Vec2, Vec3};
+    ///
+    /// let a = Lambert::new(Vec3::splat(0.5))?;
+    /// let b = Lambert::new(Vec3::splat(0.5 + 1e-7))?;
+    /// let wo = Vec3::new(0.0, 0.6, 0.8);
+    /// let (u, uc) = (Vec2::new(0.25, 0.5), 0.5);
+    /// let (sa, sb) = (a.sample(wo, u, uc).unwrap(), b.sample(wo, u, uc).unwrap());
+    /// assert_ne!(sa, sb);
+    /// assert_relative_eq!(sa, sb, epsilon = 1e-6, max_relative = 1e-6);
+    /// # Ok::<(), lobe::ParamError>(())
+    /// ```
     impl<S: AbsDiffEq<Epsilon = f32>> AbsDiffEq for BxdfSample<S> {
         type Epsilon = f32;
 
