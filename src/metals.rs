@@ -330,7 +330,10 @@ pub const ALUMINIUM: Metal = Metal {
 };
 
 /// Chromium, Johnson & Christy 1974.
-#[allow(clippy::approx_constant, reason = "measured data: κ = 3.14 at 451 nm is not π")]
+#[allow(
+    clippy::approx_constant,
+    reason = "measured data: κ = 3.14 at 451 nm is not π"
+)]
 pub const CHROMIUM: Metal = Metal {
     name: "chromium",
     symbol: "Cr",
