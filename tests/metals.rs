@@ -74,7 +74,7 @@ fn rgb_indices_are_the_data_interpolated_at_650_550_450() {
     // Gold: (η, κ) interpolated by hand from the same bracketing points as above.
     let gold = metals::GOLD.rgb();
     let eta: [f32; 3] = [0.155_574, 0.424_149, 1.383_088];
-    let k: [f32; 3] = [3.602_445, 2.472_051, 1.915_500];
+    let k: [f32; 3] = [3.602_445, 2.472_051, 1.915_5];
     for c in 0..3 {
         assert_abs_diff_eq!(gold.eta()[c], eta[c], epsilon = 2e-6);
         assert_abs_diff_eq!(gold.k()[c], k[c], epsilon = 2e-6);
