@@ -149,6 +149,7 @@ impl Metal {
     ///
     /// Outside the tabulated range the nearest end's value is returned (NaN gives the first
     /// point's), so the result is always a valid index.
+    #[inline]
     #[must_use]
     pub const fn at(&self, lambda: f32) -> ComplexIor<f32> {
         let (eta, k) = interpolate(self.samples, lambda);
@@ -157,6 +158,7 @@ impl Metal {
 
     /// The RGB complex index: the metal at 650, 550 and 450 nm ([`RGB_WAVELENGTHS`]) for the
     /// red, green and blue channels (see the [module docs](self)).
+    #[inline]
     #[must_use]
     pub const fn rgb(&self) -> ComplexIor<Vec3> {
         let [r, g, b] = RGB_WAVELENGTHS;
@@ -170,6 +172,7 @@ impl Metal {
 
     /// The complex index at the four wavelengths `lambdas` (nm) of a spectral path, each as
     /// [`at`](Self::at) gives it.
+    #[inline]
     #[must_use]
     pub const fn spectral(&self, lambdas: Vec4) -> ComplexIor<Vec4> {
         let l = lambdas.to_array();
@@ -198,6 +201,7 @@ impl Metal {
 
 /// `η` and `κ` at `lambda`, linear between the data points around it, clamped to the ends;
 /// NaN gives the first point. `samples` is non-empty and increasing in wavelength.
+#[inline]
 const fn interpolate(samples: &[IorSample], lambda: f32) -> (f32, f32) {
     let first = samples[0];
     if !(lambda > first.lambda) {
