@@ -47,8 +47,9 @@
 //! wavelengths, not a projection of its spectrum onto the sRGB primaries: each channel's
 //! normal-incidence reflectance `((η − 1)² + κ²) / ((η + 1)² + κ²)` is the measured metal's
 //! at that wavelength. Metals whose reflectance varies little across the visible range
-//! (silver, aluminium, chromium, platinum, tungsten) come out nearly grey either way; for
-//! gold, copper and brass a spectral renderer ([`Metal::spectral`]) is the faithful path.
+//! (silver, aluminium, chromium, iron, tungsten) come out nearly grey either way; for gold,
+//! copper and brass, and to a lesser degree nickel, titanium and platinum, a spectral
+//! renderer ([`Metal::spectral`]) is the faithful path.
 //!
 //! # Sources
 //!
