@@ -21,13 +21,17 @@
 //! ## A first look
 //!
 //! ```
-//! use lobe::{fresnel, Eta, Frame};
-//! use glam::Vec3;
+//! use lobe::{fresnel, metals, Eta, Frame, Vec3};
 //!
 //! // Glass seen from air, 60° from the normal.
 //! let eta = Eta::new(1.5)?;
 //! let f = fresnel::dielectric(0.5, eta);
 //! assert!(f > 0.04 && f < 0.1);
+//!
+//! // Gold at normal incidence, from its measured complex index.
+//! let gold = metals::GOLD.rgb();
+//! let f0: Vec3 = fresnel::conductor(1.0, &gold);
+//! assert!(f0.x > f0.y && f0.y > f0.z); // yellow: red, then green, then blue
 //!
 //! // A shading frame around a world-space normal.
 //! let frame = Frame::from_normal(Vec3::new(0.0, 1.0, 0.0));
@@ -38,9 +42,36 @@
 //!
 //! ## Features
 //!
-//! * `std` (default): the standard library's float functions and `std::error::Error`.
-//! * `libm`: the `no_std` math path (`--no-default-features --features libm`).
-//! * `verify`: [`verify`], the Monte Carlo estimators and statistical tests.
+//! | feature | default | gives |
+//! | --- | --- | --- |
+//! | `std` | yes | the standard library's float functions and `std::error::Error` for [`ParamError`] |
+//! | `libm` | no | the `no_std` math path (`--no-default-features --features libm`) |
+//! | `verify` | no | [`verify`]: the law checks, Monte Carlo estimators with standard errors, the chi-square test, and the seeded [`Pcg32`](verify::Pcg32), which implements `rand_core`'s `RngCore` and `SeedableRng` (implies `std`) |
+//! | `proptest` | no | `verify::strategies`: proptest strategies for directions, α, η and complex indices (implies `verify`) |
+//! | `serde` | no | `Serialize`/`Deserialize` for [`Alpha`], [`Roughness`], [`Eta`], [`Ior`], [`ComplexIor`] (validated on the way in: `alpha = -1` is refused with the parameter's name and range, see [`param`]) and [`metals::Metal`] (by name); turns on glam's `serde` |
+//! | `approx` | no | `approx` 0.5's `AbsDiffEq`/`RelativeEq` for [`bxdf::BxdfSample`] and `verify::Estimate`; turns on glam's `approx-05` |
+//! | `mint` | no | glam's `mint-05`: conversions between [`Vec3`] & co. and `mint` 0.5's types |
+//! | `bytemuck` | no | glam's `bytemuck`: `Pod`/`Zeroable` for [`Vec3`] & co. |
+//!
+//! Every feature but `std`, `verify` and `proptest` builds without std: the `no_std` path is
+//! `--no-default-features --features libm` plus any of `serde`, `approx`, `mint`, `bytemuck`.
+//!
+//! ## glam is public API
+//!
+//! Directions and spectra are [`glam`](https://docs.rs/glam/0.34) 0.34 types, re-exported as
+//! [`lobe::Vec2`](Vec2), [`lobe::Vec3`](Vec3) and [`lobe::Vec4`](Vec4). A renderer on glam
+//! 0.34.x shares them as they are: Cargo unifies semver-compatible versions into one crate.
+//! A renderer on another glam minor (0.33, or a later 0.x or 1.x) gets two distinct glam
+//! crates in its build, whose `Vec3`s are different types; it converts at the boundary, by
+//! value, which costs nothing measurable:
+//!
+//! * `lobe::Vec3::from_array(v.to_array())` (or `from`/`into` with `[f32; 3]`) works across
+//!   any two glam versions;
+//! * with `lobe`'s `mint` feature and its own glam's mint feature, `mint::Vector3<f32>` is a
+//!   common currency: `lobe::Vec3::from(mint::Vector3::from(v))`.
+//!
+//! Moving `lobe` to another glam minor is a breaking change of `lobe`'s API and gets a new
+//! `lobe` minor version (0.x) or major version (1.x and later).
 #![no_std]
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
@@ -56,6 +87,7 @@ pub mod bxdf;
 pub mod frame;
 pub mod fresnel;
 pub mod math;
+pub mod metals;
 pub mod microfacet;
 
 pub mod param;

@@ -4,9 +4,69 @@
 //! width) versus [`Roughness`] (perceptual, `α = r²`), and [`Eta`] (a *relative* index of
 //! refraction) versus [`Ior`] (an *absolute* one). Every constructor rejects NaN, infinities
 //! and out-of-range values with a [`ParamError`] that names the parameter and its range.
+//!
+//! The constructors of the scalar types, and [`ComplexIor::new_f32`], [`ComplexIor::new_vec3`]
+//! and [`ComplexIor::new_vec4`], are `const fn`, so a validated parameter can be a `const`:
+//!
+//! ```
+//! use lobe::{Alpha, ComplexIor, Vec3};
+//!
+//! const ROUGH: Alpha = match Alpha::new(0.3) {
+//!     Ok(a) => a,
+//!     Err(_) => panic!("alpha out of range"), // a compile-time error, never a run-time one
+//! };
+//! const COPPER: ComplexIor<Vec3> =
+//!     match ComplexIor::new_vec3(Vec3::new(0.27, 1.12, 1.24), Vec3::new(3.61, 2.59, 2.39)) {
+//!         Ok(ior) => ior,
+//!         Err(_) => panic!("index out of range"),
+//!     };
+//! assert_eq!(ROUGH.get(), 0.3);
+//! assert_eq!(COPPER.k().x, 3.61);
+//! ```
+//!
+//! With the `serde` feature every type here is `Serialize`/`Deserialize`, and deserialising
+//! goes through the same validation: a scene file cannot smuggle in `alpha = -1`. The scalar
+//! types are plain numbers on the wire, [`ComplexIor`] is `{ "eta": …, "k": … }` with one
+//! number per channel (glam's vectors are arrays):
+//!
+//! ```
+//! # #[cfg(feature = "serde")] {
+//! use lobe::{Alpha, ComplexIor, Eta, Vec3};
+//! use serde::Deserialize;
+//!
+//! #[derive(Deserialize)]
+//! struct Material {
+//!     name: String,
+//!     alpha: Alpha,
+//!     #[serde(default)]
+//!     coat: Option<Eta>,
+//!     metal: Option<ComplexIor<Vec3>>,
+//! }
+//!
+//! let json = r#"[
+//!     { "name": "brushed gold", "alpha": 0.3,
+//!       "metal": { "eta": [0.16, 0.42, 1.38], "k": [3.64, 2.41, 1.89] } },
+//!     { "name": "lacquer", "alpha": 0.05, "coat": 1.5, "metal": null }
+//! ]"#;
+//! let materials: Vec<Material> = serde_json::from_str(json)?;
+//! assert_eq!(materials[0].name, "brushed gold");
+//! assert_eq!(materials[0].alpha.get(), 0.3);
+//! assert_eq!(materials[1].coat.map(Eta::get), Some(1.5));
+//! assert_eq!(materials[0].metal.unwrap().k(), Vec3::new(3.64, 2.41, 1.89));
+//!
+//! // Out-of-range values are refused with the parameter's name and its valid range.
+//! let bad = r#"{ "name": "broken", "alpha": -1, "metal": null }"#;
+//! let err = serde_json::from_str::<Material>(bad).err().unwrap();
+//! assert!(err.to_string().starts_with("invalid alpha = -1: expected a value in [0.0001, 10]"));
+//! let bad = r#"{ "name": "broken", "alpha": 0.3, "metal": { "eta": 0.2, "k": 3 } }"#;
+//! assert!(serde_json::from_str::<Material>(bad).is_err()); // one number where RGB is due
+//! # }
+//! # Ok::<(), serde_json::Error>(())
+//! ```
 
 use crate::spectrum::Spectrum;
 use core::fmt;
+use glam::{Vec3, Vec4};
 
 /// A parameter refused by a constructor: which one, the value given, and the valid range.
 ///
@@ -69,7 +129,7 @@ impl std::error::Error for ParamError {}
 
 /// Accepts `value` when `lo <= value <= hi`; NaN fails the comparison and is refused.
 #[inline]
-fn check(
+const fn check(
     param: &'static str,
     value: f32,
     lo: f32,
@@ -112,6 +172,8 @@ pub(crate) fn unit_interval<S: Spectrum>(param: &'static str, value: S) -> Resul
 /// Valid range `[1e-4, 10]`. A perfectly smooth surface (`α = 0`) is a delta lobe: use the
 /// mirror and smooth dielectric models for it.
 #[derive(Clone, Copy, Debug, PartialEq, PartialOrd)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(try_from = "f32", into = "f32"))]
 pub struct Alpha(f32);
 
 impl Alpha {
@@ -124,8 +186,11 @@ impl Alpha {
     ///
     /// # Errors
     /// [`ParamError`] naming `alpha` for NaN, infinite or out-of-range `alpha`.
-    pub fn new(alpha: f32) -> Result<Self, ParamError> {
-        check("alpha", alpha, Self::MIN, Self::MAX, "[0.0001, 10]").map(Self)
+    pub const fn new(alpha: f32) -> Result<Self, ParamError> {
+        match check("alpha", alpha, Self::MIN, Self::MAX, "[0.0001, 10]") {
+            Ok(a) => Ok(Self(a)),
+            Err(e) => Err(e),
+        }
     }
 
     /// The width as a plain number.
@@ -146,6 +211,8 @@ impl From<Roughness> for Alpha {
 /// Perceptual roughness `r ∈ [0, 1]`, the artist-facing slider of Burley (2012), §5.4:
 /// the microfacet width is `α = r²`.
 #[derive(Clone, Copy, Debug, PartialEq, PartialOrd)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(try_from = "f32", into = "f32"))]
 pub struct Roughness(f32);
 
 impl Roughness {
@@ -153,8 +220,11 @@ impl Roughness {
     ///
     /// # Errors
     /// [`ParamError`] naming `roughness` for NaN or `r` outside `[0, 1]`.
-    pub fn new(r: f32) -> Result<Self, ParamError> {
-        check("roughness", r, 0.0, 1.0, "[0, 1]").map(Self)
+    pub const fn new(r: f32) -> Result<Self, ParamError> {
+        match check("roughness", r, 0.0, 1.0, "[0, 1]") {
+            Ok(r) => Ok(Self(r)),
+            Err(e) => Err(e),
+        }
     }
 
     /// The roughness as a plain number.
@@ -177,6 +247,8 @@ impl Roughness {
 ///
 /// Models take a relative [`Eta`]; build one with [`Eta::relative`].
 #[derive(Clone, Copy, Debug, PartialEq, PartialOrd)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(try_from = "f32", into = "f32"))]
 pub struct Ior(f32);
 
 impl Ior {
@@ -187,8 +259,11 @@ impl Ior {
     ///
     /// # Errors
     /// [`ParamError`] naming `ior` for NaN, infinite or out-of-range values.
-    pub fn new(ior: f32) -> Result<Self, ParamError> {
-        check("ior", ior, Eta::MIN, Eta::MAX, "[0.001, 1000]").map(Self)
+    pub const fn new(ior: f32) -> Result<Self, ParamError> {
+        match check("ior", ior, Eta::MIN, Eta::MAX, "[0.001, 1000]") {
+            Ok(v) => Ok(Self(v)),
+            Err(e) => Err(e),
+        }
     }
 
     /// The index as a plain number.
@@ -205,6 +280,8 @@ impl Ior {
 /// `η > 1` is the usual case of a denser medium inside (glass in air, `η = 1.5`); `η < 1`
 /// describes, for example, an air bubble in water.
 #[derive(Clone, Copy, Debug, PartialEq, PartialOrd)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(try_from = "f32", into = "f32"))]
 pub struct Eta(f32);
 
 impl Eta {
@@ -219,8 +296,11 @@ impl Eta {
     ///
     /// # Errors
     /// [`ParamError`] naming `eta` for NaN, infinite, non-positive or out-of-range values.
-    pub fn new(eta: f32) -> Result<Self, ParamError> {
-        check("eta", eta, Self::MIN, Self::MAX, "[0.001, 1000]").map(Self)
+    pub const fn new(eta: f32) -> Result<Self, ParamError> {
+        match check("eta", eta, Self::MIN, Self::MAX, "[0.001, 1000]") {
+            Ok(v) => Ok(Self(v)),
+            Err(e) => Err(e),
+        }
     }
 
     /// The relative index `inside / outside` of two absolute indices.
@@ -265,6 +345,30 @@ impl Eta {
     }
 }
 
+/// `TryFrom<f32>` (the validating constructor) and `From<_> for f32` (the plain number) for
+/// each scalar parameter; the serde impls go through them.
+macro_rules! scalar_conversions {
+    ($($ty:ident),*) => {$(
+        impl TryFrom<f32> for $ty {
+            type Error = ParamError;
+
+            #[inline]
+            fn try_from(value: f32) -> Result<Self, ParamError> {
+                Self::new(value)
+            }
+        }
+
+        impl From<$ty> for f32 {
+            #[inline]
+            fn from(value: $ty) -> f32 {
+                value.0
+            }
+        }
+    )*};
+}
+
+scalar_conversions!(Alpha, Roughness, Ior, Eta);
+
 /// A conductor's complex index of refraction `η + iκ`, relative to the outside medium,
 /// per channel of the spectrum `S`.
 ///
@@ -277,10 +381,42 @@ impl Eta {
 /// assert_eq!(gold.k().x, 3.983);
 /// # Ok::<(), lobe::ParamError>(())
 /// ```
+///
+/// Measured metals by name are in [`metals`](crate::metals) (`lobe::metals::GOLD.rgb()`).
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    serde(
+        try_from = "ComplexIorFields<S>",
+        bound(
+            serialize = "S: serde::Serialize",
+            deserialize = "S: Spectrum + serde::Deserialize<'de>"
+        )
+    )
+)]
 pub struct ComplexIor<S = f32> {
     eta: S,
     k: S,
+}
+
+/// The unvalidated fields of a [`ComplexIor`] as they arrive from a deserialiser; the
+/// conversion to [`ComplexIor`] is [`ComplexIor::new`].
+#[cfg(feature = "serde")]
+#[derive(serde::Deserialize)]
+#[serde(rename = "ComplexIor", deny_unknown_fields)]
+struct ComplexIorFields<S> {
+    eta: S,
+    k: S,
+}
+
+#[cfg(feature = "serde")]
+impl<S: Spectrum> TryFrom<ComplexIorFields<S>> for ComplexIor<S> {
+    type Error = ParamError;
+
+    fn try_from(raw: ComplexIorFields<S>) -> Result<Self, ParamError> {
+        Self::new(raw.eta, raw.k)
+    }
 }
 
 impl<S: Spectrum> ComplexIor<S> {
@@ -307,6 +443,82 @@ impl<S: Spectrum> ComplexIor<S> {
     #[must_use]
     pub fn k(&self) -> S {
         self.k
+    }
+
+    /// The normal-incidence reflectance `F0 = ((η − 1)² + κ²) / ((η + 1)² + κ²)` per channel
+    /// (the exact conductor Fresnel term at `cos θ = 1`).
+    #[inline]
+    #[must_use]
+    pub fn f0(&self) -> S {
+        self.eta.zip_map(self.k, |eta, k| {
+            let k2 = k * k;
+            ((eta - 1.0) * (eta - 1.0) + k2) / ((eta + 1.0) * (eta + 1.0) + k2)
+        })
+    }
+
+    /// A complex index from parts known to be valid (tabulated data, interpolations of it).
+    #[inline]
+    pub(crate) const fn from_valid_parts(eta: S, k: S) -> Self {
+        Self { eta, k }
+    }
+}
+
+/// Validates the channels of a complex index at compile time or at run time, in the order of
+/// [`ComplexIor::new`]: every `η` first, then every `κ`.
+const fn check_channels(eta: &[f32], k: &[f32]) -> Result<(), ParamError> {
+    let mut i = 0;
+    while i < eta.len() {
+        if let Err(e) = check("eta", eta[i], f32::MIN_POSITIVE, 1e3, "(0, 1000]") {
+            return Err(e);
+        }
+        i += 1;
+    }
+    let mut i = 0;
+    while i < k.len() {
+        if let Err(e) = check("k", k[i], 0.0, 1e3, "[0, 1000]") {
+            return Err(e);
+        }
+        i += 1;
+    }
+    Ok(())
+}
+
+impl ComplexIor<f32> {
+    /// [`ComplexIor::new`] for one channel, usable in a `const`.
+    ///
+    /// # Errors
+    /// As [`ComplexIor::new`].
+    pub const fn new_f32(eta: f32, k: f32) -> Result<Self, ParamError> {
+        match check_channels(&[eta], &[k]) {
+            Ok(()) => Ok(Self { eta, k }),
+            Err(e) => Err(e),
+        }
+    }
+}
+
+impl ComplexIor<Vec3> {
+    /// [`ComplexIor::new`] for RGB, usable in a `const`.
+    ///
+    /// # Errors
+    /// As [`ComplexIor::new`].
+    pub const fn new_vec3(eta: Vec3, k: Vec3) -> Result<Self, ParamError> {
+        match check_channels(&eta.to_array(), &k.to_array()) {
+            Ok(()) => Ok(Self { eta, k }),
+            Err(e) => Err(e),
+        }
+    }
+}
+
+impl ComplexIor<Vec4> {
+    /// [`ComplexIor::new`] for four wavelength samples, usable in a `const`.
+    ///
+    /// # Errors
+    /// As [`ComplexIor::new`].
+    pub const fn new_vec4(eta: Vec4, k: Vec4) -> Result<Self, ParamError> {
+        match check_channels(&eta.to_array(), &k.to_array()) {
+            Ok(()) => Ok(Self { eta, k }),
+            Err(e) => Err(e),
+        }
     }
 }
 

@@ -486,3 +486,63 @@ pub(crate) fn delta_scale(wi: Vec3) -> Option<f32> {
 pub(crate) fn both_above(wo: Vec3, wi: Vec3) -> bool {
     wo.z > 0.0 && wi.z > 0.0
 }
+
+// `approx`'s AbsDiffEq and RelativeEq for BxdfSample (feature `approx`).
+#[cfg(feature = "approx")]
+mod approx_impls {
+    use super::BxdfSample;
+    use approx::{AbsDiffEq, RelativeEq};
+
+    /// Closeness of two samples (feature `approx`): the directions, values, pdfs and crossed
+    /// indices within the tolerance, channel by channel, and the same lobe, exactly. For
+    /// comparing a model's `sample` with a reference implementation's, or one build's with
+    /// another's. As everywhere in `approx`, a relative tolerance alone never accepts a
+    /// difference from an exact zero (a direction's component, a black channel): give an
+    /// absolute floor with `epsilon` too.
+    ///
+    /// ```
+    /// use approx::assert_relative_eq;
+    /// use lobe::bxdf::{Bxdf, Lambert};
+    /// use lobe::{Vec2, Vec3};
+    ///
+    /// let a = Lambert::new(Vec3::splat(0.5))?;
+    /// let b = Lambert::new(Vec3::splat(0.5 + 1e-7))?;
+    /// let wo = Vec3::new(0.0, 0.6, 0.8);
+    /// let (u, uc) = (Vec2::new(0.25, 0.5), 0.5);
+    /// let (sa, sb) = (a.sample(wo, u, uc).unwrap(), b.sample(wo, u, uc).unwrap());
+    /// assert_ne!(sa, sb);
+    /// assert_relative_eq!(sa, sb, epsilon = 1e-6, max_relative = 1e-6);
+    /// # Ok::<(), lobe::ParamError>(())
+    /// ```
+    impl<S: AbsDiffEq<Epsilon = f32>> AbsDiffEq for BxdfSample<S> {
+        type Epsilon = f32;
+
+        #[inline]
+        fn default_epsilon() -> f32 {
+            f32::EPSILON
+        }
+
+        fn abs_diff_eq(&self, other: &Self, epsilon: f32) -> bool {
+            self.lobe == other.lobe
+                && self.wi.abs_diff_eq(other.wi, epsilon)
+                && self.f.abs_diff_eq(&other.f, epsilon)
+                && self.pdf.abs_diff_eq(&other.pdf, epsilon)
+                && self.eta.abs_diff_eq(&other.eta, epsilon)
+        }
+    }
+
+    impl<S: RelativeEq<Epsilon = f32>> RelativeEq for BxdfSample<S> {
+        #[inline]
+        fn default_max_relative() -> f32 {
+            f32::EPSILON
+        }
+
+        fn relative_eq(&self, other: &Self, epsilon: f32, max_relative: f32) -> bool {
+            self.lobe == other.lobe
+                && self.wi.relative_eq(&other.wi, epsilon, max_relative)
+                && self.f.relative_eq(&other.f, epsilon, max_relative)
+                && self.pdf.relative_eq(&other.pdf, epsilon, max_relative)
+                && self.eta.relative_eq(&other.eta, epsilon, max_relative)
+        }
+    }
+}

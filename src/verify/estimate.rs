@@ -114,6 +114,55 @@ impl fmt::Display for Estimate {
     }
 }
 
+/// Closeness of two estimates *as numbers*: the means within the tolerance, the standard
+/// errors within the tolerance, and the same sample count. It answers "is this the same
+/// estimate?" — one accumulated per thread and [merged](Accumulator::merge) against one
+/// accumulated in a single pass, one read back from a log — not "do these two measurements
+/// agree?", which is a statistical question for [`Estimate::z_score`] and
+/// [`Estimate::within`]. A NaN field (an estimate of fewer than two samples) is never close
+/// to anything.
+///
+/// ```
+/// use approx::assert_relative_eq;
+/// use lobe::verify::{Accumulator, Estimate};
+///
+/// let xs: Vec<f64> = (0..100).map(|i| f64::from(i).sqrt()).collect();
+/// let mut a: Accumulator = xs[..40].iter().copied().collect();
+/// a.merge(&xs[40..].iter().copied().collect());
+/// assert_relative_eq!(a.finish(), Estimate::from_samples(xs), max_relative = 1e-12);
+/// ```
+#[cfg(feature = "approx")]
+impl approx::AbsDiffEq for Estimate {
+    type Epsilon = f64;
+
+    #[inline]
+    fn default_epsilon() -> f64 {
+        f64::EPSILON
+    }
+
+    fn abs_diff_eq(&self, other: &Self, epsilon: f64) -> bool {
+        self.n == other.n
+            && self.mean.abs_diff_eq(&other.mean, epsilon)
+            && self.std_err.abs_diff_eq(&other.std_err, epsilon)
+    }
+}
+
+#[cfg(feature = "approx")]
+impl approx::RelativeEq for Estimate {
+    #[inline]
+    fn default_max_relative() -> f64 {
+        f64::EPSILON
+    }
+
+    fn relative_eq(&self, other: &Self, epsilon: f64, max_relative: f64) -> bool {
+        self.n == other.n
+            && self.mean.relative_eq(&other.mean, epsilon, max_relative)
+            && self
+                .std_err
+                .relative_eq(&other.std_err, epsilon, max_relative)
+    }
+}
+
 /// Accumulates samples into an [`Estimate`] with Welford's single-pass update in `f64`
 /// (Welford 1962; Knuth, *TAOCP* vol. 2, §4.2.2), which keeps the variance accurate when the
 /// mean is large next to the spread.

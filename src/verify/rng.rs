@@ -88,6 +88,60 @@ impl Pcg32 {
     }
 }
 
+/// `rand_core`'s generator traits, so that [`Pcg32`] feeds `rand` and `rand_distr`
+/// (`rng.random::<f32>()`, `Normal::new(0.0, 1.0)?.sample(&mut rng)`) and any code written
+/// against `RngCore`.
+///
+/// * [`RngCore::next_u32`](rand_core::RngCore::next_u32) is [`Pcg32::next_u32`]: the same
+///   sequence.
+/// * `next_u64` is two calls of `next_u32`, the **first giving the low** 32 bits (the
+///   convention of `rand_core::impls::next_u64_via_u32`, which `rand_pcg` also follows);
+///   [`Pcg32::next_f64`] puts the first call in the high bits instead, as it always has.
+/// * `fill_bytes` writes successive `next_u32` outputs in little-endian byte order.
+/// * [`SeedableRng::from_seed`](rand_core::SeedableRng::from_seed) takes 16 bytes: the seed
+///   as a little-endian `u64`, then the stream, so `from_seed(seed)` is
+///   `Pcg32::new(u64::from_le_bytes(seed[..8]), u64::from_le_bytes(seed[8..]))` — the
+///   layout `rand_pcg::Pcg32` uses, with the same sequence.
+///
+/// ```
+/// use lobe::verify::Pcg32;
+/// use rand::{Rng, SeedableRng};
+///
+/// let mut rng = Pcg32::seed_from_u64(7);
+/// let x: f32 = rng.random();
+/// let die = rng.random_range(1..=6);
+/// assert!((0.0..1.0).contains(&x) && (1..=6).contains(&die));
+/// ```
+impl rand_core::RngCore for Pcg32 {
+    #[inline]
+    fn next_u32(&mut self) -> u32 {
+        Pcg32::next_u32(self)
+    }
+
+    #[inline]
+    fn next_u64(&mut self) -> u64 {
+        rand_core::impls::next_u64_via_u32(self)
+    }
+
+    #[inline]
+    fn fill_bytes(&mut self, dst: &mut [u8]) {
+        rand_core::impls::fill_bytes_via_next(self, dst);
+    }
+}
+
+impl rand_core::SeedableRng for Pcg32 {
+    /// The seed's little-endian bytes, then the stream's.
+    type Seed = [u8; 16];
+
+    fn from_seed(seed: [u8; 16]) -> Self {
+        let mut state = [0; 8];
+        let mut stream = [0; 8];
+        state.copy_from_slice(&seed[..8]);
+        stream.copy_from_slice(&seed[8..]);
+        Self::new(u64::from_le_bytes(state), u64::from_le_bytes(stream))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

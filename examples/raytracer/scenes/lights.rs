@@ -11,8 +11,9 @@ use crate::quad::Quad;
 use crate::scene::{Scene, SceneBuilder};
 use lobe::bxdf::{Lambert, Microfacet, Plastic, SmoothDielectric};
 use lobe::fresnel::Conductor;
+use lobe::metals;
 use lobe::microfacet::{Ggx, Masking};
-use lobe::{Alpha, ComplexIor, Eta, ParamError, Vec3};
+use lobe::{Alpha, Eta, ParamError, Vec3};
 use std::path::Path;
 
 /// The OBJ file of the mesh, relative to the crate.
@@ -34,12 +35,13 @@ pub fn build(aspect: f32) -> Result<Scene, String> {
     let ggx = Ggx::isotropic(Alpha::new(0.2).map_err(param)?);
     let red = Plastic::new(Vec3::new(0.7, 0.08, 0.05), ggx, glass).map_err(param)?;
     let red = b.material(Material::new("red plastic", red));
-    let gold = ComplexIor::new(
-        Vec3::new(0.143, 0.375, 1.442),
-        Vec3::new(3.983, 2.386, 1.603),
-    )
-    .map_err(param)?;
-    let gold = Microfacet::new(ggx, Masking::HeightCorrelated, Conductor { ior: gold });
+    let gold = Microfacet::new(
+        ggx,
+        Masking::HeightCorrelated,
+        Conductor {
+            ior: metals::GOLD.rgb(),
+        },
+    );
     let gold = b.material(Material::new("GGX gold", gold));
     let clear = b.material(
         Material::new("glass", Mono(SmoothDielectric::new(glass)))

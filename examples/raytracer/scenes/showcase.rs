@@ -13,8 +13,9 @@ use lobe::bxdf::{
     ThinDielectric,
 };
 use lobe::fresnel::Conductor;
+use lobe::metals;
 use lobe::microfacet::{Beckmann, Ggx, Masking};
-use lobe::{Alpha, ComplexIor, Eta, ParamError, Roughness, Vec3};
+use lobe::{Alpha, Eta, ParamError, Roughness, Vec3};
 
 /// Grid columns.
 pub const COLUMNS: usize = 5;
@@ -43,32 +44,19 @@ pub const TYPES: [&str; 15] = [
 /// The common reflectance of the diffuse models, so that they compare.
 const CLAY: Vec3 = Vec3::new(0.80, 0.42, 0.28);
 
-/// Gold, copper, silver and aluminium: complex indices at the RGB wavelengths
-/// (approximately 650, 550 and 450 nm).
-fn metals() -> Result<[ComplexIor<Vec3>; 4], ParamError> {
-    Ok([
-        ComplexIor::new(
-            Vec3::new(0.143, 0.375, 1.442),
-            Vec3::new(3.983, 2.386, 1.603),
-        )?,
-        ComplexIor::new(
-            Vec3::new(0.200, 0.924, 1.102),
-            Vec3::new(3.912, 2.452, 2.142),
-        )?,
-        ComplexIor::new(Vec3::new(0.155, 0.117, 0.138), Vec3::new(4.83, 3.12, 2.15))?,
-        ComplexIor::new(
-            Vec3::new(1.657, 0.880, 0.521),
-            Vec3::new(9.224, 6.270, 4.837),
-        )?,
-    ])
-}
-
 /// The 15 materials, back row first, left to right.
 ///
 /// # Errors
 /// A [`ParamError`] if a model refuses its parameters (it does not, for these).
 pub fn materials() -> Result<Vec<Material>, ParamError> {
-    let [gold, copper, silver, aluminium] = metals()?;
+    // Measured complex indices, sampled at 650, 550 and 450 nm (`lobe::metals`).
+    let [gold, copper, silver, aluminium] = [
+        metals::GOLD,
+        metals::COPPER,
+        metals::SILVER,
+        metals::ALUMINIUM,
+    ]
+    .map(|m| m.rgb());
     let glass = Eta::new(1.5)?;
     let ggx = |a: f32| Alpha::new(a).map(Ggx::isotropic);
     let blue = Vec3::new(0.12, 0.25, 0.55);
