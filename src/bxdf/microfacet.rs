@@ -152,7 +152,7 @@ impl<D: NormalDistribution, F: Fresnel> Prepare for Microfacet<D, F> {
         }
     }
 
-    #[inline]
+    #[inline(always)]
     fn sample_prepared(
         &self,
         at: &Self::Prepared,

@@ -267,8 +267,8 @@ pub trait Bxdf {
 /// model the distribution's [`View`](crate::microfacet::View) of `wo` (Smith's `Λ(wo)` and
 /// `G1(wo)`, the visible-normal factor, GGX's stretched view and bounded cap) — into a small
 /// `Copy` value, and the `*_prepared` calls reuse it. [`sample_prepared`](Self::sample_prepared)
-/// returns the value and the density from what it computed on the way (one `D`, one half
-/// vector), and [`eval_pdf_prepared`](Self::eval_pdf_prepared) gives a light sample's value
+/// returns the value and the density from what it computed on the way (one `D`, at
+/// `wo + wi`, so that they are exactly what `eval` and `pdf` give), and [`eval_pdf_prepared`](Self::eval_pdf_prepared) gives a light sample's value
 /// and density for one `D`.
 ///
 /// Every type that implements it is a [`Bxdf`] whose `eval(wo, wi)` is
@@ -292,7 +292,8 @@ pub trait Bxdf {
 ///     assert_eq!((f, pdf), (brdf.eval(wo, wi), brdf.pdf(wo, wi)));
 /// }
 /// let s = brdf.sample_prepared(&at, Vec2::new(0.4, 0.7), 0.5).unwrap();
-/// assert_eq!(s.pdf, brdf.pdf_prepared(&at, s.wi));
+/// // The sample's value and density are the ones `eval` and `pdf` find for its direction.
+/// assert_eq!((s.f, s.pdf), brdf.eval_pdf_prepared(&at, s.wi));
 /// # Ok::<(), lobe::ParamError>(())
 /// ```
 pub trait Prepare {

@@ -179,6 +179,7 @@ impl<D: NormalDistribution, S: Spectrum> Prepare for Plastic<D, S> {
         )
     }
 
+    #[inline(always)]
     fn sample_prepared(&self, at: &Self::Prepared, u: Vec2, uc: f32) -> Option<BxdfSample<S>> {
         if !(at.wo.z > 0.0) {
             return None;

@@ -235,6 +235,7 @@ impl<D: NormalDistribution> Prepare for RoughDielectric<D> {
         })
     }
 
+    #[inline(always)]
     fn sample_prepared(&self, at: &Self::Prepared, u: Vec2, uc: f32) -> Option<BxdfSample<f32>> {
         let wo = at.wo;
         if wo.z == 0.0 {

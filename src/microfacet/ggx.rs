@@ -232,21 +232,31 @@ impl NormalDistribution for Ggx {
         g1(sqrt(self.stretched_xy(w).2 + z * z), z)
     }
 
-    /// Λ, the visible-normal factor `2 / (wz + |(αx wx, αy wy, wz)|)`, the stretched
-    /// view and the bounded cap, sharing the one square root `|(αx wx, αy wy, wz)|`.
+    /// Λ, the visible-normal factor `2 / (wz + L)`, the stretched view `wh = (αx wx, αy wy, wz)/L`
+    /// and the bounded cap, from the one square root `L = |(αx wx, αy wy, wz)|`. With
+    /// `P = s² + a² wz²` and `Q = (1 − a²) s² wz` (Eto & Tokuyoshi's `k = (1 − a²) s²/P`), the
+    /// cap's lower end is `b = k wh.z = Q/(P L)` and the reflection density's factor
+    /// `2 / (L + k wz) = 2P/(P L + Q)`: `1/L` and `b` share one division.
     #[inline(always)]
     fn view(&self, w: Vec3) -> View {
         let w = upper(w);
         let (x, y, s) = self.stretched_xy(w);
         let len = sqrt(s + w.z * w.z);
-        let visible = if w.z > 0.0 { 2.0 / (w.z + len) } else { 0.0 };
-        let wh = Vec3::new(x, y, w.z).normalize_or(Vec3::Z);
-        let (cap, reflection) = if self.bounded {
-            let b = self.bounded_cap(w, wh);
-            (b, visible * (1.0 + wh.z) / (1.0 + b))
+        let above = w.z > 0.0;
+        let visible = if above { 2.0 / (w.z + len) } else { 0.0 };
+        let (inv_len, cap, reflection) = if self.bounded {
+            let a = self.ax.min(self.ay).min(1.0);
+            let a2 = a * a;
+            let sp = 1.0 + sqrt(w.x * w.x + w.y * w.y);
+            let (p, q) = (sp * sp + a2 * w.z * w.z, (1.0 - a2) * sp * sp * w.z);
+            let r = 1.0 / (p * len);
+            let reflection = if above { 2.0 * p / (p * len + q) } else { 0.0 };
+            (p * r, q * r, reflection)
         } else {
-            (wh.z, visible)
+            let inv_len = 1.0 / len;
+            (inv_len, w.z * inv_len, visible)
         };
+        let wh = Vec3::new(x, y, w.z) * inv_len;
         View {
             w,
             // 1 + Λ = (L/wz + 1)/2 (Heitz 2014, eq. 86): as precise as 1 + Λ needs, for one

@@ -51,7 +51,8 @@ impl Masking {
     ) -> f32 {
         match self {
             Self::HeightCorrelated => 1.0 / (1.0 + view.lambda + dist.lambda(wi)),
-            Self::Separable => dist.g1(wi) / (1.0 + view.lambda),
+            // G1(wo) = (G1/cos θ) cos θ, the view's visible-normal factor.
+            Self::Separable => view.visible * view.w.z * dist.g1(wi),
             Self::VCavity => v_cavity(view.w, wi, m),
         }
     }
