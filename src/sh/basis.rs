@@ -48,6 +48,13 @@ pub const fn index(l: usize, m: isize) -> usize {
     ((l * (l + 1)) as isize + m) as usize
 }
 
+/// The flat indices of band `l`: `l² .. (l + 1)²`.
+#[inline]
+#[must_use]
+pub(crate) const fn band_range(l: usize) -> core::ops::Range<usize> {
+    l * l..(l + 1) * (l + 1)
+}
+
 /// The band and order `(l, m)` of the flat index `i`, the inverse of [`index`].
 #[inline]
 #[must_use]

@@ -1,6 +1,6 @@
 //! [`Sh`]: a fixed-size vector of spherical-harmonic coefficients.
 
-use super::basis::{basis, index, order_of};
+use super::basis::{band_range, basis, index, order_of};
 use crate::spectrum::Spectrum;
 use core::ops::{Add, AddAssign, Index, IndexMut, Mul, MulAssign, Sub, SubAssign};
 use glam::Vec3;
@@ -129,8 +129,8 @@ impl<const N: usize, S: Spectrum> Sh<N, S> {
             return S::zero();
         }
         let mut sum = S::zero();
-        for i in index(l, -(l as isize))..=index(l, l as isize) {
-            sum += self.coeffs[i] * self.coeffs[i];
+        for c in &self.coeffs[band_range(l)] {
+            sum += *c * *c;
         }
         sum
     }
@@ -149,8 +149,8 @@ impl<const N: usize, S: Spectrum> Sh<N, S> {
         let mut out = *self;
         for l in 0..Self::ORDER {
             let w = weights.get(l).copied().unwrap_or(0.0);
-            for i in index(l, -(l as isize))..=index(l, l as isize) {
-                out.coeffs[i] = out.coeffs[i] * w;
+            for c in &mut out.coeffs[band_range(l)] {
+                *c *= w;
             }
         }
         out

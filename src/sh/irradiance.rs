@@ -1,7 +1,7 @@
 //! Irradiance from radiance coefficients: the general path for any order, and Ramamoorthi &
 //! Hanrahan's 9-coefficient quadratic form.
 
-use super::basis::{basis, index};
+use super::basis::{band_range, basis};
 use super::coefficients::Sh;
 use super::zonal::clamped_cosine_eigenvalue;
 use crate::spectrum::Spectrum;
@@ -46,8 +46,8 @@ impl<const N: usize, S: Spectrum> Sh<N, S> {
                 continue;
             }
             let mut band = S::zero();
-            for i in index(l, -(l as isize))..=index(l, l as isize) {
-                band += self.coeffs[i] * y[i];
+            for (c, yi) in self.coeffs[band_range(l)].iter().zip(&y[band_range(l)]) {
+                band += *c * *yi;
             }
             sum += band * a;
         }

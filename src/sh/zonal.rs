@@ -1,7 +1,7 @@
 //! Zonal harmonics: functions symmetric about an axis, the clamped-cosine kernel, Funk–Hecke
 //! convolution and zonal lobes turned to any direction.
 
-use super::basis::{basis, index, legendre};
+use super::basis::{band_range, basis, index, legendre};
 use super::coefficients::Sh;
 use super::projection::gauss_legendre;
 use crate::math::sqrt;
@@ -156,9 +156,9 @@ impl<const L: usize> Zonal<L> {
         let y = basis::<N>(dir);
         let lambda = self.eigenvalues();
         let mut out = Sh::<N, f32>::zero();
-        for l in 0..Sh::<N, f32>::ORDER.min(L) {
-            for i in index(l, -(l as isize))..=index(l, l as isize) {
-                out.coeffs[i] = lambda[l] * y[i];
+        for (l, lambda_l) in lambda.iter().enumerate().take(Sh::<N, f32>::ORDER) {
+            for (c, yi) in out.coeffs[band_range(l)].iter_mut().zip(&y[band_range(l)]) {
+                *c = lambda_l * yi;
             }
         }
         out
