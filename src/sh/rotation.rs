@@ -38,7 +38,7 @@ fn band1_matrix(r: &Mat3) -> [[f32; 3]; 3] {
 /// ```
 ///
 /// `r1` is band 1's matrix ([`band1_matrix`]), `prev` band `l − 1`'s and `out` band `l`'s,
-/// both row-major (`out[(m+l)(2l+1) + n+l]`).
+/// both row-major (`out[(m+l)(2l+1) + n+l]`). Precondition `l ≥ 2` (band 1 is `r1` itself).
 fn next_band(l: usize, r1: &[[f32; 3]; 3], prev: &[f32], out: &mut [f32]) {
     let li = l as isize;
     let (pd, d) = (2 * li - 1, 2 * li + 1);
@@ -228,8 +228,8 @@ impl<const N: usize> ShRotation<N> {
     /// The order (number of bands), `√N`.
     pub const ORDER: usize = order_of(N);
 
-    /// The band matrices of the rotation `r` (a proper rotation: orthonormal, det +1),
-    /// band 2 in closed form.
+    /// The band matrices of the rotation `r` (orthogonal; a reflection works too, as for
+    /// [`Sh::rotated`]), band 2 in closed form.
     #[must_use]
     pub fn new(r: Mat3) -> Self {
         Self::build(r, true)
@@ -307,8 +307,10 @@ impl<const N: usize> ShRotation<N> {
 }
 
 impl<const N: usize, S: Spectrum> Sh<N, S> {
-    /// The coefficients of this function turned by the rotation `r` (orthonormal, det +1):
-    /// those of `g(ω) = f(R⁻¹ ω)`.
+    /// The coefficients of this function turned by the rotation `r`: those of
+    /// `g(ω) = f(R⁻¹ ω)`. Precondition: `r` orthogonal (`rᵀ r = I`). A reflection (det −1)
+    /// works too: every formula is a polynomial of degree `l` in `r`'s entries, so band `l`
+    /// picks up the parity `(−1)^l` as it should.
     ///
     /// Bands 1 and 2 in closed form (the rotation matrix on band 1's vector, a similarity
     /// transform of band 2's quadratic form), bands `l ≥ 3` by Ivanic & Ruedenberg's

@@ -38,9 +38,11 @@ impl<const N: usize, S: Spectrum> Transfer<N, S> {
     /// The cosine-weighted lobe of `bxdf` for the viewing direction `wo` (local, unit),
     /// projected by the quadrature `rule` over the whole sphere (so transmission is
     /// included). The lobe is not band-limited: the rule should resolve it, with more
-    /// nodes for narrower lobes (`SphereQuadrature::new(64, 128).split_at_equator()` resolves
-    /// GGX down to `α ≈ 0.2` to about 1e-4); splitting at the equator makes diffuse lobes
-    /// exact. Delta lobes (mirror, smooth glass) have no value to project and give zero.
+    /// nodes for narrower lobes (`SphereQuadrature::new(96, 192).split_at_equator()` gives
+    /// GGX at `α = 0.2` the same captured fraction to four decimals as twice the nodes, and
+    /// agrees with importance-sampled Monte Carlo in `tests/sh.rs`); splitting at the
+    /// equator makes diffuse lobes exact. Delta lobes (mirror, smooth glass) have no value to
+    /// project and give zero.
     ///
     /// ```
     /// use lobe::bxdf::Lambert;
