@@ -43,7 +43,7 @@
 //! | zonal harmonics | [`Zonal`] (clamped cosine, any profile), [`Sh::convolve`] (Funk–Hecke), [`Zonal::rotated`] | Ramamoorthi & Hanrahan 2001; Sloan 2008 |
 //! | rotation | [`Sh::rotated`], [`ShRotation`] | Ivanic & Ruedenberg 1996, 1998 |
 //! | irradiance | [`Sh::irradiance`] (any order), [`IrradianceQuadratic`] (9 coefficients) | Ramamoorthi & Hanrahan 2001, eqs. 12–13 |
-//! | BRDF transfer | [`Transfer`]: `f(wo, ·) |cos θi|` projected, its captured fraction | Sloan, Kautz & Snyder 2002 |
+//! | BRDF transfer | [`Transfer`]: the cosine-weighted lobe `f(wo, ·) cos θi` projected, and the share of it an order keeps | Sloan, Kautz & Snyder 2002 |
 //!
 //! # Example
 //!

@@ -74,6 +74,7 @@ fn push<const N: usize>(acc: &mut [Accumulator; N], w: Vec3, value: f64) {
 /// let mc = project_monte_carlo::<4>(f, 20_000, &mut Pcg32::new(1, 2));
 /// assert!(mc.within(&exact, 5.0));
 /// ```
+#[must_use]
 pub fn project_monte_carlo<const N: usize>(
     mut f: impl FnMut(Vec3) -> f32,
     samples: u64,
@@ -94,6 +95,7 @@ pub fn project_monte_carlo<const N: usize>(
 /// estimator `f |cos θi| / pdf · Y_i(ωi)` (the sample's [`weight`](crate::bxdf::BxdfSample::weight)),
 /// zero when `sample` gives no direction or a delta lobe. Unbiased when the sampler's
 /// density covers the lobe, which every model of the crate's does.
+#[must_use]
 pub fn transfer_monte_carlo<const N: usize, B: Bxdf<Spectrum = f32>>(
     bxdf: &B,
     wo: Vec3,
