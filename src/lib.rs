@@ -40,6 +40,13 @@
 //! # Ok::<(), lobe::ParamError>(())
 //! ```
 //!
+//! ## Spherical harmonics
+//!
+//! [`sh`] holds a real spherical-harmonic toolkit for lighting: the basis (closed forms for
+//! bands `l ≤ 3`, a recurrence beyond), fixed-size coefficient vectors, exact projection,
+//! rotation, zonal convolution, Ramamoorthi & Hanrahan's irradiance and the transfer vector
+//! of any [`bxdf::Bxdf`] — `no_std`, without allocation.
+//!
 //! ## Features
 //!
 //! | feature | default | gives |
@@ -92,6 +99,7 @@ pub mod microfacet;
 
 pub mod param;
 pub mod sampling;
+pub mod sh;
 pub mod spectrum;
 #[cfg(feature = "verify")]
 pub mod verify;

@@ -40,6 +40,10 @@ pub struct Options {
     pub exposure: f32,
     /// Write the default scene's label layout (Markdown) here.
     pub layout: Option<PathBuf>,
+    /// Light the scene by its environment's order-3 SH projection (`--env sh`).
+    pub env_sh: bool,
+    /// Light diffuse models by the environment's SH irradiance (`--shading irradiance`).
+    pub irradiance: bool,
 }
 
 impl Default for Options {
@@ -57,6 +61,8 @@ impl Default for Options {
             exr: false,
             exposure: 1.0,
             layout: None,
+            env_sh: false,
+            irradiance: false,
         }
     }
 }
@@ -90,6 +96,13 @@ OPTIONS:
                        furnace: lossless white spheres in a uniform environment (they
                        should vanish); lights: an OBJ mesh under point, directional and
                        spherical lights
+    --env NAME         sky: the scene's own environment (default); sh: its projection onto
+                       order-3 spherical harmonics (9 coefficients per channel), which then
+                       lights the scene and shows as the background
+    --shading NAME     full: every light traced (default); irradiance: diffuse models take
+                       the environment's light from its order-3 irradiance E(n)
+                       (Ramamoorthi & Hanrahan 2001), unshadowed and noise-free, instead of
+                       sampling it; other lights and models unchanged
     --paths EXPR       keep only light paths matching EXPR, in Heckbert's notation, from
                        the light to the eye: L (a light or the environment), D (diffuse
                        or glossy bounce),
@@ -151,6 +164,22 @@ pub fn parse<I: IntoIterator<Item = String>>(args: I) -> Result<Command, String>
                 o.scene = SceneChoice::from_name(&v).ok_or_else(|| {
                     format!("unknown scene {v:?}: use one of {}", SceneChoice::NAMES)
                 })?;
+            }
+            "--env" => {
+                o.env_sh = match value()?.as_str() {
+                    "sky" => false,
+                    "sh" => true,
+                    other => return Err(format!("unknown environment {other:?}: use sky or sh")),
+                }
+            }
+            "--shading" => {
+                o.irradiance = match value()?.as_str() {
+                    "full" => false,
+                    "irradiance" => true,
+                    other => {
+                        return Err(format!("unknown shading {other:?}: use full or irradiance"));
+                    }
+                }
             }
             "--output" => o.output = PathBuf::from(value()?),
             "--paths" => {
@@ -228,6 +257,11 @@ mod tests {
         assert_eq!(o.scene, SceneChoice::Furnace);
         assert!(o.exr);
         assert_eq!(o.paths.as_deref(), Some("LDE"));
+        assert!(!o.env_sh && !o.irradiance);
+        let Ok(Command::Render(o)) = parse(args("--env sh --shading=irradiance")) else {
+            panic!("parses");
+        };
+        assert!(o.env_sh && o.irradiance);
         assert_eq!(parse(args("--help")), Ok(Command::Help));
     }
 
@@ -248,6 +282,8 @@ mod tests {
             "--seed 1.5",
             "--exr=yes",
             "--output=",
+            "--env map",
+            "--shading flat",
         ] {
             let err = parse(args(bad)).unwrap_err();
             assert!(!err.is_empty(), "{bad}");

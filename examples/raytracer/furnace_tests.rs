@@ -62,6 +62,7 @@ fn path_tracer(max_depth: u32, filter: Option<&str>) -> Integrator {
     Integrator::Path(PathTracer {
         max_depth,
         filter: filter.map(|f| PathFilter::parse(f).unwrap()),
+        irradiance: false,
     })
 }
 
@@ -361,6 +362,7 @@ fn whitted_furnace_is_white_too() {
     let integrator = Integrator::Whitted(crate::whitted::Whitted {
         max_depth: 16,
         filter: None,
+        irradiance: false,
     });
     let s = RenderSettings {
         width: 24,

@@ -47,6 +47,7 @@ fn rendered(scene: &Scene) -> Estimate {
     let integrator = Integrator::Path(PathTracer {
         max_depth: 1,
         filter: None,
+        irradiance: false,
     });
     let s = RenderSettings {
         width: 1,

@@ -8,14 +8,15 @@
 //! [`bvh::Group`], which holds a BVH; an intersection record ([`surface::Hit`]); a
 //! [`material::Material`] holding the model; a pinhole [`camera::Camera`]. Lights are
 //! point, directional, spherical and quadrilateral area lights, and an environment
-//! (constant or a sky gradient). Two integrators: [`path::PathTracer`] (next-event
+//! (constant, a sky gradient, or its order-3 spherical-harmonic projection with `--env sh`;
+//! `--shading irradiance` lights diffuse models by its irradiance `E(n)`). Two integrators: [`path::PathTracer`] (next-event
 //! estimation, MIS, Russian roulette) and [`whitted::Whitted`]. A light-path filter in
 //! Heckbert's notation ([`heckbert`]) keeps only the paths asked for.
 //!
 //! `cargo run --release --example raytracer -- --help` lists the options. Under
 //! `cargo test` (the example has `test = true`) run the unit tests of every module, the
-//! white furnace tests ([`furnace_tests`]) and direct lighting against closed forms
-//! ([`light_tests`]).
+//! white furnace tests ([`furnace_tests`]), direct lighting against closed forms
+//! ([`light_tests`]) and the SH environment and irradiance shading ([`sh_tests`]).
 
 mod aabb;
 mod bvh;
@@ -47,6 +48,8 @@ mod whitted;
 mod furnace_tests;
 #[cfg(test)]
 mod light_tests;
+#[cfg(test)]
+mod sh_tests;
 
 use cli::{Command, IntegratorChoice, Options};
 use heckbert::PathFilter;
@@ -87,7 +90,22 @@ fn main() -> ExitCode {
 /// Builds the scene, renders it and writes the images.
 fn run(o: &Options) -> Result<(), String> {
     let aspect = o.width as f32 / o.height as f32;
-    let (scene, layout) = o.scene.build(aspect)?;
+    let (mut scene, layout) = o.scene.build(aspect)?;
+    if o.env_sh {
+        if scene.environment.is_none() {
+            println!(
+                "note: the {:?} scene has no environment to project (--env sh)",
+                o.scene
+            );
+        }
+        scene = scene.with_sh_environment();
+    }
+    if o.irradiance && scene.irradiance.is_none() {
+        println!(
+            "note: the {:?} scene has no environment: --shading irradiance changes nothing",
+            o.scene
+        );
+    }
     if let Some(layout) = &layout {
         println!("Label layout (rows back to front, columns left to right):");
         for (row, names) in scenes::showcase::ROWS.iter().zip(layout) {
@@ -104,10 +122,12 @@ fn run(o: &Options) -> Result<(), String> {
         IntegratorChoice::Path => Integrator::Path(PathTracer {
             max_depth: o.max_depth,
             filter,
+            irradiance: o.irradiance,
         }),
         IntegratorChoice::Whitted => Integrator::Whitted(Whitted {
             max_depth: o.max_depth,
             filter,
+            irradiance: o.irradiance,
         }),
     };
     let settings = RenderSettings {
@@ -117,8 +137,18 @@ fn run(o: &Options) -> Result<(), String> {
         seed: o.seed,
     };
     println!(
-        "Rendering {:?} scene, {}×{} at {} spp, {:?} integrator, max depth {}{}, {} threads",
+        "Rendering {:?} scene{}{}, {}×{} at {} spp, {:?} integrator, max depth {}{}, {} threads",
         o.scene,
+        if o.env_sh {
+            ", SH environment (order 3)"
+        } else {
+            ""
+        },
+        if o.irradiance {
+            ", irradiance shading"
+        } else {
+            ""
+        },
         o.width,
         o.height,
         o.spp,

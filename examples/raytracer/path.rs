@@ -2,10 +2,12 @@
 //! estimation, multiple importance sampling and Russian roulette.
 
 use crate::heckbert::{DIFFUSE, PathFilter, SPECULAR};
+use crate::light::Light;
 use crate::ray::{Ray, offset_origin};
 use crate::scene::Scene;
 use crate::shading::ShadingPoint;
 use lobe::Vec3;
+use lobe::bxdf::Lobes;
 use lobe::sampling::power_heuristic;
 use lobe::verify::Pcg32;
 
@@ -21,12 +23,23 @@ const ROULETTE_DEPTH: u32 = 3;
 /// them, and the light they find counts in full. After [`ROULETTE_DEPTH`] bounces a path
 /// survives with probability `min(1, max(β η²))` and is reweighted (unbiased); `η²` undoes
 /// the radiance scaling of refraction, so that paths in glass are not killed for it.
+///
+/// **Irradiance shading** (`irradiance`, `--shading irradiance`): at a vertex of a purely
+/// diffuse model, the environment's light is not sampled but read from the scene's order-3
+/// irradiance `E(n)` (Ramamoorthi & Hanrahan 2001): the vertex adds `β a/π E(n)`, with `a`
+/// the model's albedo at normal incidence (exact for Lambert, the usual diffuse
+/// approximation for the others) and `n` the shading normal, and neither next-event
+/// estimation nor the BSDF sample that escapes from it counts the environment again. It is
+/// unshadowed (the environment's occlusion by the scene is lost) and noise-free; every
+/// other light, every other model and all interreflection are traced as before.
 #[derive(Clone, Debug)]
 pub struct PathTracer {
     /// The most scattering vertices on a path.
     pub max_depth: u32,
     /// Keep only the contributions of paths that match.
     pub filter: Option<PathFilter>,
+    /// Light diffuse models by the environment's SH irradiance instead of sampling it.
+    pub irradiance: bool,
 }
 
 /// What the previous vertex's BSDF sample needs to say for MIS at the next hit.
@@ -37,6 +50,9 @@ struct Previous {
     pdf: f32,
     /// True for a delta lobe (and for the camera): the light found counts in full.
     specular: bool,
+    /// True when the vertex took its environment light from `E(n)`: the environment the
+    /// sample finds was counted already.
+    environment_done: bool,
 }
 
 impl PathTracer {
@@ -51,11 +67,12 @@ impl PathTracer {
             p: ray.origin,
             pdf: 0.0,
             specular: true,
+            environment_done: false,
         };
         let mut depth = 0;
         loop {
             let Some(hit) = scene.intersect(&ray) else {
-                if let Some((_, env)) = scene.environment {
+                if let Some((_, env)) = scene.environment.filter(|_| !prev.environment_done) {
                     let w = mis_weight(&prev, env.pdf(ray.dir));
                     let c = beta * env.radiance(ray.dir) * w;
                     self.add(&mut l, c, None, &labels);
@@ -80,9 +97,22 @@ impl PathTracer {
             // are drawn whatever the filter says, so that filtered renders use the same
             // paths as the full one (their images add up to it).
             let nee = sp.material.lobes.is_non_specular() && self.allows(Some(DIFFUSE), &labels);
+            let by_irradiance = match scene.irradiance {
+                Some(e) if self.irradiance && sp.material.lobes == Lobes::DIFFUSE_REFLECTION => {
+                    let c = beta * sp.material.ambient * e.eval(sp.frame.z).max(Vec3::ZERO);
+                    self.add(
+                        &mut l,
+                        c * core::f32::consts::FRAC_1_PI,
+                        Some(DIFFUSE),
+                        &labels,
+                    );
+                    true
+                }
+                _ => false,
+            };
             for light in &scene.lights {
                 let u = rng.next_vec2();
-                if nee {
+                if nee && !(by_irradiance && matches!(light, Light::Environment(_))) {
                     let Some(ls) = light.sample(sp.p, sp.ng, u) else {
                         continue;
                     };
@@ -125,6 +155,7 @@ impl PathTracer {
                 p: sp.p,
                 pdf: s.pdf,
                 specular: s.is_specular(),
+                environment_done: by_irradiance,
             };
             ray = Ray::new(offset_origin(sp.p, sp.ng, wi), wi);
             depth += 1;

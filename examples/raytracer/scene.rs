@@ -11,6 +11,7 @@ use crate::sphere::Sphere;
 use crate::surface::{Hit, MaterialId, Surface};
 use lobe::Vec3;
 use lobe::bxdf::Lambert;
+use lobe::sh::IrradianceQuadratic;
 
 /// Everything a render needs.
 pub struct Scene {
@@ -26,6 +27,10 @@ pub struct Scene {
     pub camera: Camera,
     /// The Whitted integrator's ambient radiance.
     pub ambient: Vec3,
+    /// The environment's irradiance `E(n)` from its order-3 SH projection (Ramamoorthi &
+    /// Hanrahan's quadratic form), for the irradiance shading mode; `None` without an
+    /// environment.
+    pub irradiance: Option<IrradianceQuadratic<Vec3>>,
 }
 
 impl Scene {
@@ -45,6 +50,20 @@ impl Scene {
     #[inline]
     pub fn material(&self, id: MaterialId) -> &Material {
         &self.materials[id as usize]
+    }
+
+    /// The same scene lit by its environment's order-3 SH projection (`--env sh`) instead
+    /// of the environment itself; unchanged without an environment.
+    pub fn with_sh_environment(mut self) -> Self {
+        if let Some((index, env)) = self.environment {
+            let l = env.project_sh();
+            let sh = Environment::Sh(l);
+            self.lights[index] = Light::Environment(sh);
+            self.environment = Some((index, sh));
+            self.ambient = sh.mean();
+            self.irradiance = Some(IrradianceQuadratic::new(&l));
+        }
+        self
     }
 }
 
@@ -138,6 +157,9 @@ impl SceneBuilder {
     /// The finished scene, seen through `camera`.
     pub fn build(self, camera: Camera) -> Scene {
         let ambient = self.environment.map_or(Vec3::ZERO, |(_, e)| e.mean());
+        let irradiance = self
+            .environment
+            .map(|(_, e)| IrradianceQuadratic::new(&e.project_sh()));
         Scene {
             geometry: Group::new(self.surfaces),
             materials: self.materials,
@@ -145,6 +167,7 @@ impl SceneBuilder {
             environment: self.environment,
             camera,
             ambient,
+            irradiance,
         }
     }
 }

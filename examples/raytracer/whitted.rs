@@ -7,7 +7,9 @@ use crate::material::Interface;
 use crate::ray::{Ray, offset_origin};
 use crate::scene::Scene;
 use crate::shading::ShadingPoint;
+use core::f32::consts::FRAC_1_PI;
 use lobe::Vec3;
+use lobe::bxdf::Lobes;
 use lobe::frame::refract;
 use lobe::fresnel;
 use lobe::verify::Pcg32;
@@ -29,12 +31,18 @@ const MIN_THROUGHPUT: f32 = 1e-3;
 /// `max_depth`, or until a ray's share of the pixel falls below 0.1%. Rough glass is traced as smooth glass; refracted radiance is not rescaled
 /// by `η²` (it cancels on leaving a closed object). Paths are labelled for the filter like
 /// the path tracer's: direct and ambient light as `L D …`, recursion as `S`.
+///
+/// With `irradiance` (`--shading irradiance`), a purely diffuse model's ambient term is the
+/// environment's order-3 irradiance instead of its mean: `a/π E(n)` at the shading normal
+/// (Ramamoorthi & Hanrahan 2001), the use irradiance environment maps were made for.
 #[derive(Clone, Debug)]
 pub struct Whitted {
     /// The deepest recursion.
     pub max_depth: u32,
     /// Keep only the contributions of paths that match.
     pub filter: Option<PathFilter>,
+    /// Diffuse models' ambient term from the environment's SH irradiance.
+    pub irradiance: bool,
 }
 
 impl Whitted {
@@ -66,7 +74,12 @@ impl Whitted {
             return self.keep(le, None, labels);
         }
         let sp = ShadingPoint::new(scene.material(hit.material), &hit, -ray.dir);
-        let mut c = scene.ambient * sp.material.ambient;
+        let mut c = match scene.irradiance {
+            Some(e) if self.irradiance && sp.material.lobes == Lobes::DIFFUSE_REFLECTION => {
+                sp.material.ambient * e.eval(sp.frame.z).max(Vec3::ZERO) * FRAC_1_PI
+            }
+            _ => scene.ambient * sp.material.ambient,
+        };
         for light in &scene.lights {
             if matches!(light, Light::Environment(_)) {
                 continue; // the ambient term stands for it
