@@ -35,7 +35,7 @@ impl Frame {
     /// JCGT 6(1), Listing 3). The tangents are continuous except across `n.z = 0`.
     ///
     /// Precondition: `n` has unit length.
-    #[inline]
+    #[inline(always)]
     #[must_use]
     pub fn from_normal(n: Vec3) -> Self {
         let sign = crate::math::copysign(1.0, n.z);
@@ -53,7 +53,7 @@ impl Frame {
     ///
     /// When `t` is (nearly) parallel to `n`, or not finite, falls back to
     /// [`Frame::from_normal`]. Precondition: `n` has unit length; `t` need not.
-    #[inline]
+    #[inline(always)]
     #[must_use]
     pub fn from_normal_tangent(n: Vec3, t: Vec3) -> Self {
         let x = t - n * n.dot(t);
@@ -70,14 +70,14 @@ impl Frame {
     }
 
     /// The world-space direction `v` expressed in this frame.
-    #[inline]
+    #[inline(always)]
     #[must_use]
     pub fn to_local(&self, v: Vec3) -> Vec3 {
         Vec3::new(v.dot(self.x), v.dot(self.y), v.dot(self.z))
     }
 
     /// The local direction `v` expressed in world space.
-    #[inline]
+    #[inline(always)]
     #[must_use]
     pub fn to_world(&self, v: Vec3) -> Vec3 {
         self.x * v.x + self.y * v.y + self.z * v.z
@@ -85,42 +85,42 @@ impl Frame {
 }
 
 /// `cos θ` of a local direction: its `z`.
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn cos_theta(w: Vec3) -> f32 {
     w.z
 }
 
 /// `cos² θ` of a local direction.
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn cos2_theta(w: Vec3) -> f32 {
     w.z * w.z
 }
 
 /// `sin² θ = 1 − cos² θ`, clamped at zero.
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn sin2_theta(w: Vec3) -> f32 {
     (1.0 - w.z * w.z).max(0.0)
 }
 
 /// `sin θ`, never NaN for a unit direction.
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn sin_theta(w: Vec3) -> f32 {
     safe_sqrt(1.0 - w.z * w.z)
 }
 
 /// `tan² θ = sin² θ / cos² θ`; `+∞` for a direction in the tangent plane.
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn tan2_theta(w: Vec3) -> f32 {
     sin2_theta(w) / cos2_theta(w)
 }
 
 /// `cos φ` of a local direction; `1` along the normal, where `φ` is undefined.
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn cos_phi(w: Vec3) -> f32 {
     let s = sin_theta(w);
@@ -132,7 +132,7 @@ pub fn cos_phi(w: Vec3) -> f32 {
 }
 
 /// `sin φ` of a local direction; `0` along the normal, where `φ` is undefined.
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn sin_phi(w: Vec3) -> f32 {
     let s = sin_theta(w);
@@ -144,7 +144,7 @@ pub fn sin_phi(w: Vec3) -> f32 {
 }
 
 /// True when two local directions lie strictly on the same side of the surface.
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn same_hemisphere(a: Vec3, b: Vec3) -> bool {
     a.z * b.z > 0.0
@@ -153,7 +153,7 @@ pub fn same_hemisphere(a: Vec3, b: Vec3) -> bool {
 /// The mirror reflection of `w` about the unit normal `n`: `2 (w·n) n − w`.
 ///
 /// `w` points away from the surface, and so does the result (seed 003, "Mirror reflection").
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn reflect(w: Vec3, n: Vec3) -> Vec3 {
     2.0 * w.dot(n) * n - w
@@ -167,7 +167,7 @@ pub fn reflect(w: Vec3, n: Vec3) -> Vec3 {
 /// result points away from the surface on the other side and obeys Snell's law
 /// `η_i sin θ_i = η_t sin θ_t`. Total internal reflection happens exactly when
 /// `(η_i/η_t)² sin² θ_i > 1`. (PBR 4th ed., §9.3.2, eq. 9.5 and the vector form after it.)
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn refract(w: Vec3, n: Vec3, eta: Eta) -> Option<Vec3> {
     let mut cos_i = w.dot(n);

@@ -37,7 +37,7 @@ use crate::spectrum::Spectrum;
 ///
 /// Schlick (1994), "An Inexpensive BRDF Model for Physically-based Rendering", *Computer
 /// Graphics Forum* 13(3): the Fresnel factor approximated by a fifth power of `1 − cos θd`.
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn schlick<S: Spectrum>(f0: S, cos_d: f32) -> S {
     // w = (1 − |cos θd|)⁵, the grazing weight of Schlick's interpolation.
@@ -151,7 +151,7 @@ fn dielectric_core(cos_i: f32, eta: f32) -> (f32, f32, f32, f32) {
 /// assert_eq!(fresnel::dielectric(0.3, Eta::new(1.0)?), 0.0);
 /// # Ok::<(), lobe::ParamError>(())
 /// ```
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn dielectric(cos_i: f32, eta: Eta) -> f32 {
     dielectric_core(cos_i, eta.get()).0
@@ -176,7 +176,7 @@ pub fn dielectric(cos_i: f32, eta: Eta) -> f32 {
 /// assert_eq!((r.eta_it, r.eta_ti), (1.5, 1.0 / 1.5));
 /// # Ok::<(), lobe::ParamError>(())
 /// ```
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn dielectric_full(cos_i: f32, eta: Eta) -> DielectricFresnel {
     let (reflectance, ct, eta_it, eta_ti) = dielectric_core(cos_i, eta.get());
@@ -197,7 +197,7 @@ pub fn dielectric_full(cos_i: f32, eta: Eta) -> DielectricFresnel {
 /// (`cos_t`, `cos_i`, `1/eta_it`) gives the same value, which makes a refraction model built on
 /// it exactly reciprocal; and it needs no `cos θt` from Snell's law, whose `1 − η² sin² θ`
 /// cancels near the critical angle. Both cosines `0` (a grazing pair) gives `1`.
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn dielectric_refracted(cos_i: f32, cos_t: f32, eta_it: f32) -> f32 {
     let (ci, ct) = (cos_i.abs().min(1.0), cos_t.abs().min(1.0));
@@ -286,7 +286,7 @@ fn conductor_channel(c: f32, sin2_i: f32, eta: f32, k: f32) -> f32 {
 /// assert_eq!(fresnel::conductor(0.0, &gold), Vec3::ONE);
 /// # Ok::<(), lobe::ParamError>(())
 /// ```
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn conductor<S: Spectrum>(cos_i: f32, ior: &ComplexIor<S>) -> S {
     let c = cos_i.abs().min(1.0);
@@ -329,7 +329,7 @@ pub fn conductor<S: Spectrum>(cos_i: f32, ior: &ComplexIor<S>) -> S {
 /// Evaluated as `ρ∥² = ((η cos θ − 1)² + (κ cos θ)²) / ((η cos θ + 1)² + (κ cos θ)²)` and
 /// `ρ⊥² = ((η − cos θ)² + κ²) / ((η + cos θ)² + κ²)`, the same expressions as sums of
 /// squares, so each ratio stays in `[0, 1]`. `cos_i < 0` is evaluated at `|cos_i|`.
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn conductor_approx<S: Spectrum>(cos_i: f32, ior: &ComplexIor<S>) -> S {
     let c = cos_i.abs().min(1.0);
@@ -377,7 +377,7 @@ impl<S: Spectrum> Schlick<S> {
 
 impl<S: Spectrum> Fresnel for Schlick<S> {
     type Spectrum = S;
-    #[inline]
+    #[inline(always)]
     fn eval(&self, cos_d: f32) -> S {
         schlick(self.f0, cos_d)
     }
@@ -392,7 +392,7 @@ pub struct Conductor<S = f32> {
 
 impl<S: Spectrum> Fresnel for Conductor<S> {
     type Spectrum = S;
-    #[inline]
+    #[inline(always)]
     fn eval(&self, cos_d: f32) -> S {
         conductor(cos_d, &self.ior)
     }
@@ -407,7 +407,7 @@ pub struct Dielectric {
 
 impl Fresnel for Dielectric {
     type Spectrum = f32;
-    #[inline]
+    #[inline(always)]
     fn eval(&self, cos_d: f32) -> f32 {
         dielectric(cos_d, self.eta)
     }
@@ -428,7 +428,7 @@ impl<S> NoFresnel<S> {
 
 impl<S: Spectrum> Fresnel for NoFresnel<S> {
     type Spectrum = S;
-    #[inline]
+    #[inline(always)]
     fn eval(&self, _cos_d: f32) -> S {
         S::one()
     }

@@ -90,6 +90,7 @@ extern crate std;
 #[cfg(not(any(feature = "std", feature = "libm")))]
 compile_error!("lobe needs a float library: enable the `std` (default) or the `libm` feature");
 
+pub mod batch;
 pub mod bxdf;
 pub mod frame;
 pub mod fresnel;

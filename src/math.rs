@@ -9,7 +9,7 @@
 macro_rules! shim {
     ($(#[$doc:meta])* $name:ident => $std:ident, $libm:ident) => {
         $(#[$doc])*
-        #[inline]
+        #[inline(always)]
         #[must_use]
         pub fn $name(x: f32) -> f32 {
             #[cfg(feature = "std")]
@@ -52,7 +52,7 @@ shim!(/// Largest integer not above `x`.
     floor => floor, floorf);
 
 /// `x` raised to the power `y`.
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn powf(x: f32, y: f32) -> f32 {
     #[cfg(feature = "std")]
@@ -66,7 +66,7 @@ pub fn powf(x: f32, y: f32) -> f32 {
 }
 
 /// Four-quadrant arc tangent of `y / x`, in `(-π, π]`.
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn atan2(y: f32, x: f32) -> f32 {
     #[cfg(feature = "std")]
@@ -81,7 +81,7 @@ pub fn atan2(y: f32, x: f32) -> f32 {
 
 /// Square root in `f64`, for the few places where `f32` cancels (the rough dielectric's
 /// generalised half vector).
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn sqrt_f64(x: f64) -> f64 {
     #[cfg(feature = "std")]
@@ -95,14 +95,14 @@ pub fn sqrt_f64(x: f64) -> f64 {
 }
 
 /// The magnitude of `x` with the sign bit of `sign`.
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn copysign(x: f32, sign: f32) -> f32 {
     f32::from_bits((x.to_bits() & 0x7fff_ffff) | (sign.to_bits() & 0x8000_0000))
 }
 
 /// Sine and cosine of the same angle, `(sin x, cos x)`.
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn sin_cos(x: f32) -> (f32, f32) {
     (sin(x), cos(x))
@@ -112,7 +112,7 @@ pub fn sin_cos(x: f32) -> (f32, f32) {
 /// coefficients of Moshier's Cephes library (`sinf.c`, `cosf.c`), within about one `f32` ulp
 /// on that interval. Branch-free and without a library call: the kernel of
 /// [`sin_cos_turns`] and of the concentric disk map.
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn sin_cos_octant(theta: f32) -> (f32, f32) {
     let x2 = theta * theta;
@@ -131,7 +131,7 @@ pub fn sin_cos_octant(theta: f32) -> (f32, f32) {
 /// `θ = 2π (t − q/4) ∈ [−π/4, π/4]` goes through [`sin_cos_octant`], and the quadrant swaps
 /// and negates the pair. Within a few `f32` ulps of the exact values, and exactly `(0, 1)`,
 /// `(1, 0)`, … at the quarter turns.
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn sin_cos_turns(t: f32) -> (f32, f32) {
     // 1.5 · 2²³: in [2²³, 2²⁴) floats are the integers, so the sum rounds 4t to the nearest
@@ -153,7 +153,7 @@ pub fn sin_cos_turns(t: f32) -> (f32, f32) {
 }
 
 /// `x` raised to the fifth power, by three multiplications.
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn pow5(x: f32) -> f32 {
     let x2 = x * x;
@@ -163,7 +163,7 @@ pub fn pow5(x: f32) -> f32 {
 /// `cos^p θ` for `p ≥ 0`, given `cos θ ≥ 0` and `sin² θ`. Near the axis, where `cos θ` rounds
 /// to 1 and a large `p` magnifies that, it is `exp(p/2 · ln(1 − sin² θ))` from the
 /// better-conditioned `sin² θ`; elsewhere `powf(cos θ, p)`.
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn cos_pow(cos: f32, sin2: f32, p: f32) -> f32 {
     if sin2 < 0.5 {
@@ -174,21 +174,21 @@ pub fn cos_pow(cos: f32, sin2: f32, p: f32) -> f32 {
 }
 
 /// Square root clamped at zero: `sqrt(max(x, 0))`, never NaN for non-NaN input.
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn safe_sqrt(x: f32) -> f32 {
     sqrt(x.max(0.0))
 }
 
 /// Arc cosine with its argument clamped to `[-1, 1]`, never NaN for non-NaN input.
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn safe_acos(x: f32) -> f32 {
     acos(x.clamp(-1.0, 1.0))
 }
 
 /// Arc sine with its argument clamped to `[-1, 1]`, never NaN for non-NaN input.
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn safe_asin(x: f32) -> f32 {
     asin(x.clamp(-1.0, 1.0))

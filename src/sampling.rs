@@ -41,7 +41,7 @@ const INV_2PI: f32 = 0.5 * FRAC_1_PI;
 const INV_4PI: f32 = 0.25 * FRAC_1_PI;
 
 /// The angle `atan2(y, x)` moved into `[0, 2π)`, as a fraction of a full turn in `[0, 1]`.
-#[inline]
+#[inline(always)]
 fn turn_fraction(y: f32, x: f32) -> f32 {
     let phi = atan2(y, x);
     let phi = if phi < 0.0 { phi + TAU } else { phi };
@@ -55,7 +55,7 @@ fn turn_fraction(y: f32, x: f32) -> f32 {
 /// goes to the circle of radius `r`, at angle `φ = (π/4) b/a` where `|a| > |b|` and
 /// `φ = π/2 − (π/4) a/b` otherwise. Precondition: `u ∈ [0, 1]²`; the result has length ≤ 1
 /// (up to rounding).
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn square_to_disk_concentric(u: Vec2) -> Vec2 {
     let a = 2.0 * u.x - 1.0;
@@ -83,7 +83,7 @@ pub fn square_to_disk_concentric(u: Vec2) -> Vec2 {
 /// Inverts Shirley & Chiu 1997, §3: the signed radius is `±|p|` (the sign of the dominant
 /// coordinate) and the ratio of the square coordinates is `(4/π) atan(y/x)` (or of `x/y`).
 /// Precondition: `|p| ≤ 1`; the result is clamped to `[0, 1]²`.
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn disk_to_square_concentric(p: Vec2) -> Vec2 {
     let r = p.length();
@@ -109,7 +109,7 @@ pub fn disk_to_square_concentric(p: Vec2) -> Vec2 {
 /// Malley's method (PBR 4th ed., §A.5): a uniform point of the disk
 /// ([`square_to_disk_concentric`]) lifted to the hemisphere, `z = √(1 − x² − y²)`.
 /// Precondition: `u ∈ [0, 1]²`.
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn cosine_hemisphere(u: Vec2) -> Vec3 {
     let d = square_to_disk_concentric(u);
@@ -117,7 +117,7 @@ pub fn cosine_hemisphere(u: Vec2) -> Vec3 {
 }
 
 /// The solid-angle density of [`cosine_hemisphere`]: `max(cos θ, 0) / π` (PBR 4th ed., §A.5).
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn cosine_hemisphere_pdf(cos_theta: f32) -> f32 {
     cos_theta.max(0.0) * FRAC_1_PI
@@ -127,7 +127,7 @@ pub fn cosine_hemisphere_pdf(cos_theta: f32) -> f32 {
 /// concentric map.
 ///
 /// Precondition: `w` is a unit vector with `w.z ≥ 0`; the result is in `[0, 1]²`.
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn cosine_hemisphere_inverse(w: Vec3) -> Vec2 {
     disk_to_square_concentric(Vec2::new(w.x, w.y))
@@ -139,7 +139,7 @@ pub fn cosine_hemisphere_inverse(w: Vec3) -> Vec2 {
 ///
 /// The lobe of Phong-like models (Lafortune & Willems 1994) and the `D cos θ` sampler of the
 /// normalised Blinn-Phong distribution (`n = p + 1`; Walter et al. 2007, eq. 31).
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn cosine_power_hemisphere(u: Vec2, n: f32) -> Vec3 {
     let l = ln(u.x.max(f32::MIN_POSITIVE)) / (n + 1.0);
@@ -150,7 +150,7 @@ pub fn cosine_power_hemisphere(u: Vec2, n: f32) -> Vec3 {
 }
 
 /// The density of [`cosine_power_hemisphere`]: `(n + 1)/(2π) max(0, cos θ)^n`.
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn cosine_power_hemisphere_pdf(cos_theta: f32, n: f32) -> f32 {
     if cos_theta > 0.0 {
@@ -164,7 +164,7 @@ pub fn cosine_power_hemisphere_pdf(cos_theta: f32, n: f32) -> f32 {
 ///
 /// PBR 4th ed., §A.5: `z = u.x`, `φ = 2π u.y`, `sin θ = √((1 − z)(1 + z))`.
 /// Precondition: `u ∈ [0, 1]²`.
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn uniform_hemisphere(u: Vec2) -> Vec3 {
     let z = u.x;
@@ -175,7 +175,7 @@ pub fn uniform_hemisphere(u: Vec2) -> Vec3 {
 
 /// The solid-angle density of [`uniform_hemisphere`], `1 / (2π)`, for directions with
 /// `z ≥ 0` (PBR 4th ed., §A.5).
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn uniform_hemisphere_pdf() -> f32 {
     INV_2PI
@@ -184,7 +184,7 @@ pub fn uniform_hemisphere_pdf() -> f32 {
 /// The inverse of [`uniform_hemisphere`]: `(z, φ / 2π)` with `φ ∈ [0, 2π)`.
 ///
 /// Precondition: `w` is a unit vector with `w.z ≥ 0`; the result is in `[0, 1]²`.
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn uniform_hemisphere_inverse(w: Vec3) -> Vec2 {
     Vec2::new(w.z.clamp(0.0, 1.0), turn_fraction(w.y, w.x))
@@ -195,7 +195,7 @@ pub fn uniform_hemisphere_inverse(w: Vec3) -> Vec2 {
 /// PBR 4th ed., §A.5: `z = 1 − 2u.x`, `φ = 2π u.y`, `sin θ = 2√(u.x (1 − u.x))`
 /// (that is `√(1 − z²)` factored so it keeps its digits near the poles).
 /// Precondition: `u ∈ [0, 1]²`.
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn uniform_sphere(u: Vec2) -> Vec3 {
     let z = 1.0 - 2.0 * u.x;
@@ -205,7 +205,7 @@ pub fn uniform_sphere(u: Vec2) -> Vec3 {
 }
 
 /// The solid-angle density of [`uniform_sphere`], `1 / (4π)` (PBR 4th ed., §A.5).
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn uniform_sphere_pdf() -> f32 {
     INV_4PI
@@ -214,7 +214,7 @@ pub fn uniform_sphere_pdf() -> f32 {
 /// The inverse of [`uniform_sphere`]: `((1 − z) / 2, φ / 2π)` with `φ ∈ [0, 2π)`.
 ///
 /// Precondition: `w` is a unit vector; the result is in `[0, 1]²`.
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn uniform_sphere_inverse(w: Vec3) -> Vec2 {
     Vec2::new((0.5 * (1.0 - w.z)).clamp(0.0, 1.0), turn_fraction(w.y, w.x))
@@ -227,7 +227,7 @@ pub fn uniform_sphere_inverse(w: Vec3) -> Vec2 {
 /// computed as `√((1 − cos θ)(1 + cos θ))` so that narrow cones keep their digits.
 /// Precondition: `u ∈ [0, 1]²` and `cos_theta_max ∈ [−1, 1]` (`−1` is the whole sphere,
 /// `1` the single direction `+z`).
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn uniform_cone(u: Vec2, cos_theta_max: f32) -> Vec3 {
     let one_minus_cos = u.x * (1.0 - cos_theta_max);
@@ -243,7 +243,7 @@ pub fn uniform_cone(u: Vec2, cos_theta_max: f32) -> Vec3 {
 /// The cone of `cos_theta_max = 1` is a single direction, and its density is `+∞` (a delta);
 /// [`balance_heuristic`] and [`power_heuristic`] accept that. Precondition:
 /// `cos_theta_max ∈ [−1, 1]`.
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn uniform_cone_pdf(cos_theta_max: f32) -> f32 {
     INV_2PI / (1.0 - cos_theta_max)
@@ -254,7 +254,7 @@ pub fn uniform_cone_pdf(cos_theta_max: f32) -> f32 {
 /// Precondition: `w` is a unit vector inside the cone and `cos_theta_max ∈ [−1, 1]`; the
 /// result is in `[0, 1]²`. For the degenerate cone `cos_theta_max = 1`, whose every `u`
 /// gives `+z`, the first coordinate is `0`.
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn uniform_cone_inverse(w: Vec3, cos_theta_max: f32) -> Vec2 {
     let width = 1.0 - cos_theta_max;
@@ -268,7 +268,7 @@ pub fn uniform_cone_inverse(w: Vec3, cos_theta_max: f32) -> Vec2 {
 
 /// The weighted densities `(nf f_pdf, ng g_pdf)` as a ratio `(ng g_pdf) / (nf f_pdf)`, or the
 /// weight itself where that ratio is not a number.
-#[inline]
+#[inline(always)]
 fn mis_ratio(nf: f32, f_pdf: f32, ng: f32, g_pdf: f32) -> Result<f32, f32> {
     let f = nf * f_pdf;
     // `0 · ∞` (a strategy that takes no samples) carries no weight.
@@ -291,7 +291,7 @@ fn mis_ratio(nf: f32, f_pdf: f32, ng: f32, g_pdf: f32) -> Result<f32, f32> {
 /// Total: `0` when `nf p_f = 0` (including both densities `0`), `1` when `nf p_f` is
 /// infinite (a delta strategy) and `ng p_g` is not, `0` in the opposite case, and `½` when
 /// both are infinite. Precondition: non-negative, non-NaN arguments.
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn balance_heuristic(nf: f32, f_pdf: f32, ng: f32, g_pdf: f32) -> f32 {
     match mis_ratio(nf, f_pdf, ng, g_pdf) {
@@ -306,7 +306,7 @@ pub fn balance_heuristic(nf: f32, f_pdf: f32, ng: f32, g_pdf: f32) -> f32 {
 /// Total, with the same conventions as [`balance_heuristic`]: `0` when `nf p_f = 0`, `1` for
 /// an infinite `nf p_f` against a finite `ng p_g`, `0` in the opposite case, `½` when both
 /// are infinite. Precondition: non-negative, non-NaN arguments.
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn power_heuristic(nf: f32, f_pdf: f32, ng: f32, g_pdf: f32) -> f32 {
     match mis_ratio(nf, f_pdf, ng, g_pdf) {

@@ -101,12 +101,12 @@ impl Spectrum for f32 {
         *self
     }
 
-    #[inline]
+    #[inline(always)]
     fn map(self, f: impl Fn(f32) -> f32) -> Self {
         f(self)
     }
 
-    #[inline]
+    #[inline(always)]
     fn zip_map(self, other: Self, f: impl Fn(f32, f32) -> f32) -> Self {
         f(self, other)
     }
@@ -125,12 +125,12 @@ impl Spectrum for Vec3 {
         self[i]
     }
 
-    #[inline]
+    #[inline(always)]
     fn map(self, f: impl Fn(f32) -> f32) -> Self {
         Vec3::new(f(self.x), f(self.y), f(self.z))
     }
 
-    #[inline]
+    #[inline(always)]
     fn zip_map(self, other: Self, f: impl Fn(f32, f32) -> f32) -> Self {
         Vec3::new(f(self.x, other.x), f(self.y, other.y), f(self.z, other.z))
     }
@@ -149,12 +149,12 @@ impl Spectrum for Vec4 {
         self[i]
     }
 
-    #[inline]
+    #[inline(always)]
     fn map(self, f: impl Fn(f32) -> f32) -> Self {
         Vec4::new(f(self.x), f(self.y), f(self.z), f(self.w))
     }
 
-    #[inline]
+    #[inline(always)]
     fn zip_map(self, other: Self, f: impl Fn(f32, f32) -> f32) -> Self {
         Vec4::new(
             f(self.x, other.x),

@@ -71,16 +71,25 @@ impl<D: NormalDistribution, F: Fresnel> Microfacet<D, F> {
     }
 
     /// The distribution of microfacet normals.
-    #[inline]
+    #[inline(always)]
     #[must_use]
     pub fn distribution(&self) -> &D {
         &self.distribution
     }
 
     /// `f` for `wo`, `wi` above the surface, their sum `s = wo + wi` (the half vector
-    /// before normalising) with `s2 = |s|²`, and `d = D(s/|s|)`.
-    #[inline]
-    fn value(&self, at: &At<View>, wi: Vec3, s: Vec3, s2: f32, d: f32) -> F::Spectrum {
+    /// before normalising) with `s2 = |s|²`, and `d = D(s/|s|)`, under `masking` (the model's;
+    /// a parameter so that a batched loop can fix it, and its branch, outside the loop).
+    #[inline(always)]
+    fn value(
+        &self,
+        at: &At<View>,
+        wi: Vec3,
+        s: Vec3,
+        s2: f32,
+        d: f32,
+        masking: Masking,
+    ) -> F::Spectrum {
         let wo = at.wo;
         // A product of cosines that underflows (subnormal cos θ) would divide 0 by 0: the
         // light there is grazing to within 1e-38 and contributes nothing.
@@ -89,9 +98,7 @@ impl<D: NormalDistribution, F: Fresnel> Microfacet<D, F> {
             return F::Spectrum::zero();
         }
         // G2 / (4 cos θo cos θi); the V-cavity term takes the normal's direction from s.
-        let v = self
-            .masking
-            .visibility(&self.distribution, &at.state, wi, s);
+        let v = masking.visibility(&self.distribution, &at.state, wi, s);
         // Finite even where the V-cavity term keeps G = 1 for a grazing mirror pair of a very
         // narrow lobe, where D / (4 cos θo cos θi) exceeds f32.
         let scale = (d * v).min(f32::MAX);
@@ -101,20 +108,91 @@ impl<D: NormalDistribution, F: Fresnel> Microfacet<D, F> {
 
     /// The density of `wi` reflected about a normal drawn from the distribution, at their
     /// sum `s` with `d = D(s/|s|)`: the normal's density times `1/(4 wo·h)`.
-    #[inline]
+    #[inline(always)]
     fn density(&self, at: &At<View>, s: Vec3, d: f32) -> f32 {
         self.distribution.pdf_reflection(&at.state, s, d)
     }
 
-    /// `(s, |s|², D(s/|s|))` for `s = wo + wi` of a pair above the surface, or `None`.
-    #[inline]
-    fn half_above(&self, at: &At<View>, wi: Vec3) -> Option<(Vec3, f32, f32)> {
+    /// `(s, |s|²)` for `s = wo + wi` of a pair above the surface with a non-zero sum (the
+    /// microfacet normal's direction), or `None`.
+    #[inline(always)]
+    fn half_above(at: &At<View>, wi: Vec3) -> Option<(Vec3, f32)> {
         if !both_above(at.wo, wi) {
             return None;
         }
         let s = at.wo + wi;
         let s2 = s.length_squared();
-        (s2 > 0.0).then(|| (s, s2, self.distribution.d_unnormalized(s, s2)))
+        if s2 > 0.0 { Some((s, s2)) } else { None }
+    }
+
+    /// [`Prepare::eval_prepared`] under `masking`.
+    #[inline(always)]
+    pub(crate) fn eval_with(&self, at: &At<View>, wi: Vec3, masking: Masking) -> F::Spectrum {
+        match Self::half_above(at, wi) {
+            Some((s, s2)) => {
+                let d = self.distribution.d_unnormalized(s, s2);
+                self.value(at, wi, s, s2, d, masking)
+            }
+            None => F::Spectrum::zero(),
+        }
+    }
+
+    /// [`Prepare::eval_pdf_prepared`] under `masking`.
+    #[inline(always)]
+    pub(crate) fn eval_pdf_with(
+        &self,
+        at: &At<View>,
+        wi: Vec3,
+        masking: Masking,
+    ) -> (F::Spectrum, f32) {
+        match Self::half_above(at, wi) {
+            Some((s, s2)) => {
+                let d = self.distribution.d_unnormalized(s, s2);
+                (
+                    self.value(at, wi, s, s2, d, masking),
+                    self.density(at, s, d),
+                )
+            }
+            None => (F::Spectrum::zero(), 0.0),
+        }
+    }
+
+    /// [`Prepare::sample_prepared`] under `masking`.
+    #[inline(always)]
+    pub(crate) fn sample_with(
+        &self,
+        at: &At<View>,
+        u: Vec2,
+        masking: Masking,
+    ) -> Option<BxdfSample<F::Spectrum>> {
+        if !(at.wo.z > 0.0) {
+            return None;
+        }
+        let m = self.distribution.sample_reflection(&at.state, u);
+        let wi = reflect(at.wo, m);
+        // Evaluate at wo + wi, as `eval` and `pdf` do, rather than at `m`: the two differ by
+        // rounding, and a renderer's MIS needs `pdf` to reproduce the sample's density
+        // exactly. D once, for both the value and the density.
+        let (s, s2) = Self::half_above(at, wi)?;
+        let d = self.distribution.d_unnormalized(s, s2);
+        let pdf = self.density(at, s, d);
+        if !(pdf > 0.0 && pdf.is_finite()) {
+            return None;
+        }
+        Some(BxdfSample {
+            wi,
+            f: self.value(at, wi, s, s2, d, masking),
+            pdf,
+            lobe: Lobes::GLOSSY_REFLECTION,
+            eta: 1.0,
+        })
+    }
+
+    /// The masking-shadowing term.
+    #[inline(always)]
+    #[must_use]
+    pub fn masking(&self) -> Masking {
+        self.masking
     }
 }
 
@@ -132,24 +210,20 @@ impl<D: NormalDistribution, F: Fresnel> Prepare for Microfacet<D, F> {
 
     #[inline(always)]
     fn eval_prepared(&self, at: &Self::Prepared, wi: Vec3) -> F::Spectrum {
-        match self.half_above(at, wi) {
-            Some((s, s2, d)) => self.value(at, wi, s, s2, d),
-            None => F::Spectrum::zero(),
-        }
+        self.eval_with(at, wi, self.masking)
     }
 
     #[inline(always)]
     fn pdf_prepared(&self, at: &Self::Prepared, wi: Vec3) -> f32 {
-        self.half_above(at, wi)
-            .map_or(0.0, |(s, _, d)| self.density(at, s, d))
+        match Self::half_above(at, wi) {
+            Some((s, s2)) => self.density(at, s, self.distribution.d_unnormalized(s, s2)),
+            None => 0.0,
+        }
     }
 
     #[inline(always)]
     fn eval_pdf_prepared(&self, at: &Self::Prepared, wi: Vec3) -> (F::Spectrum, f32) {
-        match self.half_above(at, wi) {
-            Some((s, s2, d)) => (self.value(at, wi, s, s2, d), self.density(at, s, d)),
-            None => (F::Spectrum::zero(), 0.0),
-        }
+        self.eval_pdf_with(at, wi, self.masking)
     }
 
     #[inline(always)]
@@ -159,29 +233,10 @@ impl<D: NormalDistribution, F: Fresnel> Prepare for Microfacet<D, F> {
         u: Vec2,
         _uc: f32,
     ) -> Option<BxdfSample<F::Spectrum>> {
-        if !(at.wo.z > 0.0) {
-            return None;
-        }
-        let m = self.distribution.sample_reflection(&at.state, u);
-        let wi = reflect(at.wo, m);
-        // Evaluate at wo + wi, as `eval` and `pdf` do, rather than at `m`: the two differ by
-        // rounding, and a renderer's MIS needs `pdf` to reproduce the sample's density
-        // exactly. D once, for both the value and the density.
-        let (s, s2, d) = self.half_above(at, wi)?;
-        let pdf = self.density(at, s, d);
-        if !(pdf > 0.0 && pdf.is_finite()) {
-            return None;
-        }
-        Some(BxdfSample {
-            wi,
-            f: self.value(at, wi, s, s2, d),
-            pdf,
-            lobe: Lobes::GLOSSY_REFLECTION,
-            eta: 1.0,
-        })
+        self.sample_with(at, u, self.masking)
     }
 
-    #[inline]
+    #[inline(always)]
     fn lobes(&self) -> Lobes {
         Lobes::GLOSSY_REFLECTION
     }

@@ -81,42 +81,42 @@ impl Lobes {
     pub const SPECULAR_TRANSMISSION: Self = Self(Self::SPECULAR.0 | Self::TRANSMISSION.0);
 
     /// True when every kind in `other` is in `self`.
-    #[inline]
+    #[inline(always)]
     #[must_use]
     pub const fn contains(self, other: Self) -> bool {
         self.0 & other.0 == other.0
     }
 
     /// True when `self` and `other` share a kind.
-    #[inline]
+    #[inline(always)]
     #[must_use]
     pub const fn intersects(self, other: Self) -> bool {
         self.0 & other.0 != 0
     }
 
     /// True when the set has a delta lobe.
-    #[inline]
+    #[inline(always)]
     #[must_use]
     pub const fn is_specular(self) -> bool {
         self.intersects(Self::SPECULAR)
     }
 
     /// True when the set has a lobe with a density (diffuse or glossy).
-    #[inline]
+    #[inline(always)]
     #[must_use]
     pub const fn is_non_specular(self) -> bool {
         self.intersects(Self(Self::DIFFUSE.0 | Self::GLOSSY.0))
     }
 
     /// True when the set reflects.
-    #[inline]
+    #[inline(always)]
     #[must_use]
     pub const fn is_reflective(self) -> bool {
         self.intersects(Self::REFLECTION)
     }
 
     /// True when the set transmits.
-    #[inline]
+    #[inline(always)]
     #[must_use]
     pub const fn is_transmissive(self) -> bool {
         self.intersects(Self::TRANSMISSION)
@@ -125,14 +125,14 @@ impl Lobes {
 
 impl BitOr for Lobes {
     type Output = Self;
-    #[inline]
+    #[inline(always)]
     fn bitor(self, rhs: Self) -> Self {
         Self(self.0 | rhs.0)
     }
 }
 
 impl BitOrAssign for Lobes {
-    #[inline]
+    #[inline(always)]
     fn bitor_assign(&mut self, rhs: Self) {
         self.0 |= rhs.0;
     }
@@ -194,14 +194,14 @@ pub struct BxdfSample<S> {
 
 impl<S: Spectrum> BxdfSample<S> {
     /// The throughput weight `f |cos θi| / pdf` a path tracer multiplies by.
-    #[inline]
+    #[inline(always)]
     #[must_use]
     pub fn weight(&self) -> S {
         self.f * (self.wi.z.abs() / self.pdf)
     }
 
     /// True when the sample came from a delta lobe.
-    #[inline]
+    #[inline(always)]
     #[must_use]
     pub fn is_specular(&self) -> bool {
         self.lobe.is_specular()
@@ -219,7 +219,7 @@ pub struct At<V> {
 
 impl<V> At<V> {
     /// The prepared viewer direction.
-    #[inline]
+    #[inline(always)]
     #[must_use]
     pub fn wo(&self) -> Vec3 {
         self.wo
@@ -317,7 +317,7 @@ pub trait Prepare {
 
     /// `(eval, pdf)` for the prepared `wo`, sharing their work (a microfacet model evaluates
     /// `D` once): what a renderer needs for a light sample weighed by MIS.
-    #[inline]
+    #[inline(always)]
     #[must_use]
     fn eval_pdf_prepared(&self, at: &Self::Prepared, wi: Vec3) -> (Self::Spectrum, f32) {
         (self.eval_prepared(at, wi), self.pdf_prepared(at, wi))
@@ -340,22 +340,22 @@ pub trait Prepare {
 impl<T: Prepare> Bxdf for T {
     type Spectrum = T::Spectrum;
 
-    #[inline]
+    #[inline(always)]
     fn eval(&self, wo: Vec3, wi: Vec3) -> T::Spectrum {
         self.eval_prepared(&self.prepare(wo), wi)
     }
 
-    #[inline]
+    #[inline(always)]
     fn sample(&self, wo: Vec3, u: Vec2, uc: f32) -> Option<BxdfSample<T::Spectrum>> {
         self.sample_prepared(&self.prepare(wo), u, uc)
     }
 
-    #[inline]
+    #[inline(always)]
     fn pdf(&self, wo: Vec3, wi: Vec3) -> f32 {
         self.pdf_prepared(&self.prepare(wo), wi)
     }
 
-    #[inline]
+    #[inline(always)]
     fn lobes(&self) -> Lobes {
         Prepare::lobes(self)
     }
@@ -394,12 +394,12 @@ impl<T: CosineSampled> Prepare for T {
     /// `wo` itself: the cosine sampler needs nothing else.
     type Prepared = Vec3;
 
-    #[inline]
+    #[inline(always)]
     fn prepare(&self, wo: Vec3) -> Vec3 {
         wo
     }
 
-    #[inline]
+    #[inline(always)]
     fn eval_prepared(&self, &wo: &Vec3, wi: Vec3) -> T::Spectrum {
         if both_above(wo, wi) {
             self.value(wo, wi)
@@ -408,12 +408,12 @@ impl<T: CosineSampled> Prepare for T {
         }
     }
 
-    #[inline]
+    #[inline(always)]
     fn pdf_prepared(&self, &wo: &Vec3, wi: Vec3) -> f32 {
         pdf_cosine(wo, wi)
     }
 
-    #[inline]
+    #[inline(always)]
     fn eval_pdf_prepared(&self, &wo: &Vec3, wi: Vec3) -> (T::Spectrum, f32) {
         if both_above(wo, wi) {
             (
@@ -425,12 +425,12 @@ impl<T: CosineSampled> Prepare for T {
         }
     }
 
-    #[inline]
+    #[inline(always)]
     fn sample_prepared(&self, &wo: &Vec3, u: Vec2, _uc: f32) -> Option<BxdfSample<T::Spectrum>> {
         sample_cosine(wo, u, |wi| self.value(wo, wi))
     }
 
-    #[inline]
+    #[inline(always)]
     fn lobes(&self) -> Lobes {
         Lobes::DIFFUSE_REFLECTION
     }
@@ -438,7 +438,7 @@ impl<T: CosineSampled> Prepare for T {
 
 /// Cosine-weighted sampling, shared by the diffuse models: `wi` with density `cos θi / π`
 /// for `wo` above the surface, its value given by `value(wi)`.
-#[inline]
+#[inline(always)]
 pub(crate) fn sample_cosine<S>(
     wo: Vec3,
     u: Vec2,
@@ -463,7 +463,7 @@ pub(crate) fn sample_cosine<S>(
 
 /// The density of [`sample_cosine`]: `cos θi / π` where both directions are above the
 /// surface, else 0.
-#[inline]
+#[inline(always)]
 pub(crate) fn pdf_cosine(wo: Vec3, wi: Vec3) -> f32 {
     if both_above(wo, wi) {
         crate::sampling::cosine_hemisphere_pdf(wi.z)
@@ -475,14 +475,14 @@ pub(crate) fn pdf_cosine(wo: Vec3, wi: Vec3) -> f32 {
 /// `1/|cos θi|` for a delta lobe's value, or `None` when `|cos θi|` is subnormal (or zero),
 /// where the value `F/|cos θi|` would overflow `f32`: such a sample is refused rather than
 /// returned with an infinite value.
-#[inline]
+#[inline(always)]
 pub(crate) fn delta_scale(wi: Vec3) -> Option<f32> {
     let c = wi.z.abs();
     (c >= f32::MIN_POSITIVE).then(|| 1.0 / c)
 }
 
 /// `wo` and `wi` both strictly above the surface: the support of a one-sided BRDF.
-#[inline]
+#[inline(always)]
 #[must_use]
 pub(crate) fn both_above(wo: Vec3, wi: Vec3) -> bool {
     wo.z > 0.0 && wi.z > 0.0
@@ -518,7 +518,7 @@ mod approx_impls {
     impl<S: AbsDiffEq<Epsilon = f32>> AbsDiffEq for BxdfSample<S> {
         type Epsilon = f32;
 
-        #[inline]
+        #[inline(always)]
         fn default_epsilon() -> f32 {
             f32::EPSILON
         }
@@ -533,7 +533,7 @@ mod approx_impls {
     }
 
     impl<S: RelativeEq<Epsilon = f32>> RelativeEq for BxdfSample<S> {
-        #[inline]
+        #[inline(always)]
         fn default_max_relative() -> f32 {
             f32::EPSILON
         }

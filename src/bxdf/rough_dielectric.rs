@@ -69,14 +69,14 @@ impl<D: NormalDistribution> RoughDielectric<D> {
     }
 
     /// The relative index of refraction.
-    #[inline]
+    #[inline(always)]
     #[must_use]
     pub fn eta(&self) -> Eta {
         self.eta
     }
 
     /// The relative index `η'` seen by a transmission from `wo`'s side.
-    #[inline]
+    #[inline(always)]
     fn etap(&self, wo: Vec3) -> f32 {
         if wo.z > 0.0 {
             self.eta.get()
@@ -87,7 +87,7 @@ impl<D: NormalDistribution> RoughDielectric<D> {
 
     /// The microfacet configuration that connects `wo` and `wi`, or `None` when no single
     /// microfacet can.
-    #[inline]
+    #[inline(always)]
     fn configuration(&self, wo: Vec3, wi: Vec3) -> Option<Configuration> {
         // Also refuses a pair whose product of cosines underflows (subnormal cos θ), where
         // the value would be 0/0.
@@ -130,14 +130,15 @@ impl<D: NormalDistribution> RoughDielectric<D> {
     }
 
     /// The Fresnel reflectance `F(wo·h)` of a configuration, which chooses between the lobes.
-    #[inline]
+    #[inline(always)]
     fn fresnel(&self, wo: Vec3, c: &Configuration) -> f32 {
         dielectric(wo.dot(c.h), self.eta)
     }
 
     /// `f` for a configuration, with `d = D(h)` and `fresnel = F(wo·h)`, which only
-    /// reflection uses.
-    #[inline]
+    /// reflection uses, under `masking` (the model's; a parameter so that a batched loop can
+    /// fix it, and its branch, outside the loop).
+    #[inline(always)]
     fn value(
         &self,
         at: &At<View>,
@@ -145,15 +146,14 @@ impl<D: NormalDistribution> RoughDielectric<D> {
         c: &Configuration,
         d: f32,
         fresnel: impl FnOnce() -> f32,
+        masking: Masking,
     ) -> f32 {
         if d == 0.0 {
             return 0.0;
         }
         let wo = at.wo;
         // G2 / (4 |cos θo cos θi|).
-        let v = self
-            .masking
-            .visibility(&self.distribution, &at.state, wi, c.h);
+        let v = masking.visibility(&self.distribution, &at.state, wi, c.h);
         if c.reflection {
             (fresnel() * d * v).min(f32::MAX)
         } else {
@@ -172,7 +172,7 @@ impl<D: NormalDistribution> RoughDielectric<D> {
     /// The density of a configuration, with `d = D(h)` and `f = F(wo·h)`: the normal's
     /// density, the probability of the lobe and the Jacobian of reflection `1/(4 |wo·h|)` or
     /// of refraction `|wi·h| / (wi·h + (wo·h)/η')²` (Walter et al. 2007, eqs. 14 and 17).
-    #[inline]
+    #[inline(always)]
     fn density(&self, at: &At<View>, wi: Vec3, c: &Configuration, d: f32, f: f32) -> f32 {
         let pdf_h = self.distribution.pdf(&at.state, c.h, d);
         if c.reflection {
@@ -195,48 +195,45 @@ struct Configuration {
     denom2: f32,
 }
 
-impl<D: NormalDistribution> Prepare for RoughDielectric<D> {
-    type Spectrum = f32;
-    type Prepared = At<View>;
-
-    /// `wo` and the distribution's view of it (of `−wo` from the inside).
+impl<D: NormalDistribution> RoughDielectric<D> {
+    /// [`Prepare::eval_prepared`] under `masking`.
     #[inline(always)]
-    fn prepare(&self, wo: Vec3) -> Self::Prepared {
-        At {
-            wo,
-            state: self.distribution.view(wo),
+    pub(crate) fn eval_with(&self, at: &At<View>, wi: Vec3, masking: Masking) -> f32 {
+        // `match` rather than `map_or`: a closure is not always inlined, and a call would
+        // keep a batched loop from vectorising.
+        match self.configuration(at.wo, wi) {
+            Some(c) => {
+                let d = self.distribution.d(c.h);
+                self.value(at, wi, &c, d, || self.fresnel(at.wo, &c), masking)
+            }
+            None => 0.0,
         }
     }
 
+    /// [`Prepare::eval_pdf_prepared`] under `masking`.
     #[inline(always)]
-    fn eval_prepared(&self, at: &Self::Prepared, wi: Vec3) -> f32 {
-        self.configuration(at.wo, wi).map_or(0.0, |c| {
-            let d = self.distribution.d(c.h);
-            self.value(at, wi, &c, d, || self.fresnel(at.wo, &c))
-        })
+    pub(crate) fn eval_pdf_with(&self, at: &At<View>, wi: Vec3, masking: Masking) -> (f32, f32) {
+        match self.configuration(at.wo, wi) {
+            Some(c) => {
+                let (d, f) = (self.distribution.d(c.h), self.fresnel(at.wo, &c));
+                (
+                    self.value(at, wi, &c, d, || f, masking),
+                    self.density(at, wi, &c, d, f),
+                )
+            }
+            None => (0.0, 0.0),
+        }
     }
 
+    /// [`Prepare::sample_prepared`] under `masking`.
     #[inline(always)]
-    fn pdf_prepared(&self, at: &Self::Prepared, wi: Vec3) -> f32 {
-        self.configuration(at.wo, wi).map_or(0.0, |c| {
-            let (d, f) = (self.distribution.d(c.h), self.fresnel(at.wo, &c));
-            self.density(at, wi, &c, d, f)
-        })
-    }
-
-    #[inline(always)]
-    fn eval_pdf_prepared(&self, at: &Self::Prepared, wi: Vec3) -> (f32, f32) {
-        self.configuration(at.wo, wi).map_or((0.0, 0.0), |c| {
-            let (d, f) = (self.distribution.d(c.h), self.fresnel(at.wo, &c));
-            (
-                self.value(at, wi, &c, d, || f),
-                self.density(at, wi, &c, d, f),
-            )
-        })
-    }
-
-    #[inline(always)]
-    fn sample_prepared(&self, at: &Self::Prepared, u: Vec2, uc: f32) -> Option<BxdfSample<f32>> {
+    pub(crate) fn sample_with(
+        &self,
+        at: &At<View>,
+        u: Vec2,
+        uc: f32,
+        masking: Masking,
+    ) -> Option<BxdfSample<f32>> {
         let wo = at.wo;
         if wo.z == 0.0 {
             return None;
@@ -266,14 +263,61 @@ impl<D: NormalDistribution> Prepare for RoughDielectric<D> {
         };
         Some(BxdfSample {
             wi,
-            f: self.value(at, wi, &c, d, || f_wo),
+            f: self.value(at, wi, &c, d, || f_wo, masking),
             pdf,
             lobe,
             eta,
         })
     }
 
-    #[inline]
+    /// The masking-shadowing term.
+    #[inline(always)]
+    #[must_use]
+    pub fn masking(&self) -> Masking {
+        self.masking
+    }
+}
+
+impl<D: NormalDistribution> Prepare for RoughDielectric<D> {
+    type Spectrum = f32;
+    type Prepared = At<View>;
+
+    /// `wo` and the distribution's view of it (of `−wo` from the inside).
+    #[inline(always)]
+    fn prepare(&self, wo: Vec3) -> Self::Prepared {
+        At {
+            wo,
+            state: self.distribution.view(wo),
+        }
+    }
+
+    #[inline(always)]
+    fn eval_prepared(&self, at: &Self::Prepared, wi: Vec3) -> f32 {
+        self.eval_with(at, wi, self.masking)
+    }
+
+    #[inline(always)]
+    fn pdf_prepared(&self, at: &Self::Prepared, wi: Vec3) -> f32 {
+        match self.configuration(at.wo, wi) {
+            Some(c) => {
+                let (d, f) = (self.distribution.d(c.h), self.fresnel(at.wo, &c));
+                self.density(at, wi, &c, d, f)
+            }
+            None => 0.0,
+        }
+    }
+
+    #[inline(always)]
+    fn eval_pdf_prepared(&self, at: &Self::Prepared, wi: Vec3) -> (f32, f32) {
+        self.eval_pdf_with(at, wi, self.masking)
+    }
+
+    #[inline(always)]
+    fn sample_prepared(&self, at: &Self::Prepared, u: Vec2, uc: f32) -> Option<BxdfSample<f32>> {
+        self.sample_with(at, u, uc, self.masking)
+    }
+
+    #[inline(always)]
     fn lobes(&self) -> Lobes {
         Lobes::GLOSSY_REFLECTION | Lobes::GLOSSY_TRANSMISSION
     }

@@ -76,7 +76,7 @@ impl Ggx {
 
     /// Whether [`sample_reflection`](NormalDistribution::sample_reflection) uses the bounded
     /// sampler ([`with_bounded_reflection`](Self::with_bounded_reflection)).
-    #[inline]
+    #[inline(always)]
     #[must_use]
     pub fn bounded_reflection(&self) -> bool {
         self.bounded
@@ -89,14 +89,14 @@ impl Ggx {
     }
 
     /// The widths `(αx, αy)`.
-    #[inline]
+    #[inline(always)]
     #[must_use]
     pub fn alpha(&self) -> (f32, f32) {
         (self.ax, self.ay)
     }
 
     /// `(αx wx, αy wy)`, and `(αx wx)² + (αy wy)²`: `α(φ)² tan² θ · cos² θ` of a direction.
-    #[inline]
+    #[inline(always)]
     fn stretched_xy(&self, w: Vec3) -> (f32, f32, f32) {
         let (x, y) = (self.ax * w.x, self.ay * w.y);
         (x, y, x * x + y * y)
@@ -104,20 +104,20 @@ impl Ggx {
 
     /// `w` in the configuration where the distribution is the uniform hemisphere
     /// (Heitz 2018, §3.2): `normalize(αx wx, αy wy, wz)`.
-    #[inline]
+    #[inline(always)]
     fn stretch(&self, w: Vec3) -> Vec3 {
         Vec3::new(self.ax * w.x, self.ay * w.y, w.z).normalize_or(Vec3::Z)
     }
 
     /// A normal of the hemisphere configuration mapped back to the ellipsoid one.
-    #[inline]
+    #[inline(always)]
     fn unstretch(&self, h: Vec3) -> Vec3 {
         Vec3::new(self.ax * h.x, self.ay * h.y, h.z.max(0.0)).normalize_or(Vec3::Z)
     }
 
     /// The halfway vector of the view and a direction drawn uniformly from the spherical cap
     /// `z ≥ −b` (Dupuy & Benyoub 2023, Listing 3; `b = wh.z` gives the visible normals).
-    #[inline]
+    #[inline(always)]
     fn sample_cap(&self, wh: Vec3, b: f32, u: Vec2) -> Vec3 {
         let z = (1.0 - u.y) * (1.0 + b) - b;
         let r = safe_sqrt(1.0 - z * z);
@@ -129,7 +129,7 @@ impl Ggx {
     /// (upper hemisphere) and its stretched form `wh`: `b = k wh.z` with
     /// `k = (1 − a²) s² / (s² + a² wz²)`, `s = 1 + √(wx² + wy²)`, `a = min(αx, αy, 1)`
     /// (Eto & Tokuyoshi 2023, eqs. 5–6).
-    #[inline]
+    #[inline(always)]
     fn bounded_cap(&self, w: Vec3, wh: Vec3) -> f32 {
         let a = self.ax.min(self.ay).min(1.0);
         let a2 = a * a;
@@ -188,18 +188,18 @@ impl Ggx {
 /// `extra[4] = G1/cos θ · (1 + wh.z)/(1 + b)`, that is `2 / (|(αx wx, αy wy, wz)| + k wz)`
 /// (Eto & Tokuyoshi 2023, eq. 7); and `L = |(αx wx, αy wy, wz)|` (`extra[5]`), with which
 /// `1 + Λ = (L/|wz| + 1)/2`.
-#[inline]
+#[inline(always)]
 fn stretched_view(view: &View) -> Vec3 {
     Vec3::new(view.extra[0], view.extra[1], view.extra[2])
 }
 
 impl NormalDistribution for Ggx {
-    #[inline]
+    #[inline(always)]
     fn sampling(&self) -> Sampling {
         Sampling::VisibleNormals
     }
 
-    #[inline]
+    #[inline(always)]
     fn d(&self, m: Vec3) -> f32 {
         if !(m.z > 0.0) {
             return 0.0;
@@ -211,7 +211,7 @@ impl NormalDistribution for Ggx {
 
     /// `t(s) = (sx/αx)² + (sy/αy)² + sz²` is homogeneous of degree 2, so
     /// `D(s/|s|) = c / (t(s)/|s|²)²`: one division and no square root.
-    #[inline]
+    #[inline(always)]
     fn d_unnormalized(&self, s: Vec3, s2: f32) -> f32 {
         if !(s.z > 0.0) {
             return 0.0;
@@ -221,12 +221,12 @@ impl NormalDistribution for Ggx {
         self.norm * q * q
     }
 
-    #[inline]
+    #[inline(always)]
     fn lambda(&self, w: Vec3) -> f32 {
         lambda(self.stretched_xy(w).2, w.z)
     }
 
-    #[inline]
+    #[inline(always)]
     fn g1(&self, w: Vec3) -> f32 {
         let z = w.z.abs();
         g1(sqrt(self.stretched_xy(w).2 + z * z), z)
@@ -270,13 +270,13 @@ impl NormalDistribution for Ggx {
     /// Dupuy & Benyoub 2023 ("Sampling Visible GGX Normals with Spherical Caps", Listing 3):
     /// in the stretched configuration, the halfway vector of the view and a direction drawn
     /// uniformly from the spherical cap `z ≥ −wh.z`.
-    #[inline]
+    #[inline(always)]
     fn sample(&self, view: &View, u: Vec2) -> Vec3 {
         let wh = stretched_view(view);
         self.sample_cap(wh, wh.z, u)
     }
 
-    #[inline]
+    #[inline(always)]
     fn sample_reflection(&self, view: &View, u: Vec2) -> Vec3 {
         self.sample_cap(stretched_view(view), view.extra[3], u)
     }
@@ -284,14 +284,14 @@ impl NormalDistribution for Ggx {
     /// With `1 + Λ(w) = (L/|wz| + 1)/2` (Heitz 2014, eq. 86), `1 + Λo + Λi` is
     /// `(Lo |zi| + Li |zo|) / (2 |zo zi|)` and `V = G2 / (4 |zo zi|) = 1 / (2 (Lo |zi| + Li |zo|))`:
     /// one square root and one division for the pair.
-    #[inline]
+    #[inline(always)]
     fn visibility(&self, view: &View, wi: Vec3) -> f32 {
         let zi = wi.z.abs();
         let li = sqrt(self.stretched_xy(wi).2 + zi * zi);
         0.5 / (view.extra[5] * zi + li * view.w.z)
     }
 
-    #[inline]
+    #[inline(always)]
     fn pdf_reflection(&self, view: &View, m: Vec3, d: f32) -> f32 {
         if view.w.dot(m) > 0.0 {
             0.25 * view.extra[4] * d
@@ -304,7 +304,7 @@ impl NormalDistribution for Ggx {
 impl SampleDCos for Ggx {
     /// Slopes drawn from GGX's slope distribution, radius `r = √(u/(1−u))` (Walter et al.
     /// 2007, eq. 35, in slope form), stretched by `(αx, αy)`.
-    #[inline]
+    #[inline(always)]
     fn sample_d_cos(&self, u: Vec2) -> Vec3 {
         let r = sqrt(u.x / (1.0 - u.x).max(f32::MIN_POSITIVE));
         let (s, c) = sin_cos_turns(u.y);
@@ -314,7 +314,7 @@ impl SampleDCos for Ggx {
 
 /// GGX's `Λ` from `(αx wx)² + (αy wy)²` and `wz`: `(√(1 + α² tan² θ) − 1)/2`, written as
 /// `x / (2 (1 + √(1 + x)))` to keep the digits near the normal (Heitz 2014, eq. 86).
-#[inline]
+#[inline(always)]
 fn lambda(s: f32, z: f32) -> f32 {
     if s == 0.0 {
         return 0.0;
@@ -328,7 +328,7 @@ fn lambda(s: f32, z: f32) -> f32 {
 
 /// GGX's `G1 = 2 |wz| / (|wz| + |(αx wx, αy wy, wz)|)` from that length: the same as
 /// `1/(1 + Λ)` without the infinity.
-#[inline]
+#[inline(always)]
 fn g1(len: f32, z: f32) -> f32 {
     let z = z.abs();
     if len == 0.0 { 1.0 } else { 2.0 * z / (z + len) }

@@ -27,7 +27,7 @@ pub enum Masking {
 impl Masking {
     /// `G2(wo, wi, m)` for the distribution `dist`, without the `χ⁺` orientation factors
     /// (the model applies them). `m` is used only by [`Masking::VCavity`].
-    #[inline]
+    #[inline(always)]
     #[must_use]
     pub fn g2<D: NormalDistribution + ?Sized>(self, dist: &D, wo: Vec3, wi: Vec3, m: Vec3) -> f32 {
         match self {
@@ -40,7 +40,7 @@ impl Masking {
     /// [`g2`](Self::g2) with `wo` prepared as `view` ([`NormalDistribution::view`]), whose
     /// `Λ(wo)` is reused rather than evaluated again. The value is the same:
     /// every term depends on `wo` only through `|wo.z|`, `|wo·m|` and `Λ`, which are even.
-    #[inline]
+    #[inline(always)]
     #[must_use]
     pub fn g2_view<D: NormalDistribution + ?Sized>(
         self,
@@ -60,7 +60,7 @@ impl Masking {
     /// `G2 / (4 |cos θo| |cos θi|)` with `wo` prepared as `view`: the masking-shadowing factor
     /// of a microfacet model's value, the height-correlated one through
     /// [`NormalDistribution::visibility`]. For `|cos θo cos θi|` above `f32::MIN_POSITIVE`.
-    #[inline]
+    #[inline(always)]
     #[must_use]
     pub fn visibility<D: NormalDistribution + ?Sized>(
         self,
@@ -82,7 +82,7 @@ impl Masking {
 /// own `|w·m|`. For reflection `wo·m = wi·m` and this is Cook & Torrance's formula; for
 /// refraction (Walter et al. 2007, §5.1) it keeps the term symmetric in `wo` and `wi`, so that
 /// a refracting model built on it stays reciprocal. `0` when either `w·m` is `0`.
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn v_cavity(wo: Vec3, wi: Vec3, m: Vec3) -> f32 {
     let (wom, wim) = (wo.dot(m).abs(), wi.dot(m).abs());

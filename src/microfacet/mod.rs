@@ -69,7 +69,7 @@ pub struct View {
 impl View {
     /// The density of the normals visible from the view, given `d = D(m)`:
     /// `D_w(m) = G1(w) max(0, w·m) D(m) / cos θw` (Heitz & d'Eon 2014, eq. 2).
-    #[inline]
+    #[inline(always)]
     #[must_use]
     pub fn visible_density(&self, m: Vec3, d: f32) -> f32 {
         let wm = self.w.dot(m);
@@ -142,7 +142,7 @@ pub trait NormalDistribution {
     /// holds after adding two directions, before normalising their half vector. The default
     /// normalises; a distribution homogeneous in `m` skips the square root and the division
     /// ([`Ggx`]: `D = c / t(s/|s|)² = c (|s|² / t(s))²`).
-    #[inline]
+    #[inline(always)]
     #[must_use]
     fn d_unnormalized(&self, s: Vec3, s2: f32) -> f32 {
         self.d(s / crate::math::sqrt(s2))
@@ -168,7 +168,7 @@ pub trait NormalDistribution {
 
     /// Smith's masking function `G1(w) = 1 / (1 + Λ(w))`, without the microfacet-side
     /// factor `χ⁺(w·m)`, which the caller applies.
-    #[inline]
+    #[inline(always)]
     #[must_use]
     fn g1(&self, w: Vec3) -> f32 {
         1.0 / (1.0 + self.lambda(w))
@@ -176,7 +176,7 @@ pub trait NormalDistribution {
 
     /// Height-correlated masking-shadowing `G2 = 1 / (1 + Λ(wo) + Λ(wi))` (Heitz 2014,
     /// eq. 99), the physically preferred form; without the `χ⁺` factors.
-    #[inline]
+    #[inline(always)]
     #[must_use]
     fn g2(&self, wo: Vec3, wi: Vec3) -> f32 {
         1.0 / (1.0 + self.lambda(wo) + self.lambda(wi))
@@ -184,7 +184,7 @@ pub trait NormalDistribution {
 
     /// Separable masking-shadowing `G2 = G1(wo) G1(wi)` (Heitz 2014, eq. 98), which counts
     /// a microfacet hidden from both directions twice and so is never above [`g2`](Self::g2).
-    #[inline]
+    #[inline(always)]
     #[must_use]
     fn g2_separable(&self, wo: Vec3, wi: Vec3) -> f32 {
         self.g1(wo) * self.g1(wi)
@@ -198,7 +198,7 @@ pub trait NormalDistribution {
     ///
     /// A distribution with a closed-form `Λ` can fold the division into one ([`Ggx`]:
     /// `V = 1 / (2 (Lw |cos θi| + Li |cos θw|))`, `L = |(αx x, αy y, z)|`).
-    #[inline]
+    #[inline(always)]
     #[must_use]
     fn visibility(&self, view: &View, wi: Vec3) -> f32 {
         1.0 / ((1.0 + view.lambda + self.lambda(wi)) * 4.0 * view.w.z * wi.z.abs())
@@ -206,7 +206,7 @@ pub trait NormalDistribution {
 
     /// The view of `w`: what the densities and the sampler need about it, computed once.
     /// `w` below the horizon is first replaced by `−w` ([`upper`]).
-    #[inline]
+    #[inline(always)]
     #[must_use]
     fn view(&self, w: Vec3) -> View {
         let w = upper(w);
@@ -229,7 +229,7 @@ pub trait NormalDistribution {
     ///
     /// `w` below the horizon is first replaced by `−w` ([`upper`]), the convention of
     /// [`view`](Self::view). (A model holds a view and calls [`View::visible_density`].)
-    #[inline]
+    #[inline(always)]
     #[must_use]
     fn d_visible(&self, w: Vec3, m: Vec3) -> f32 {
         self.view(w).visible_density(m, self.d(m))
@@ -238,7 +238,7 @@ pub trait NormalDistribution {
     /// The density of [`sample`](Self::sample) at `m`, in solid angle of `m`, given
     /// `d = D(m)` (which the caller has evaluated for its value already): the visible normals
     /// [`View::visible_density`] or `D(m) max(0, cos θm)`, as [`sampling`](Self::sampling) says.
-    #[inline]
+    #[inline(always)]
     #[must_use]
     fn pdf(&self, view: &View, m: Vec3, d: f32) -> f32 {
         match self.sampling() {
@@ -251,7 +251,7 @@ pub trait NormalDistribution {
     /// [`pdf_reflection`](Self::pdf_reflection). The default is [`sample`](Self::sample); a
     /// distribution may instead skip normals that would reflect `w` below the horizon
     /// ([`Ggx`] uses Eto & Tokuyoshi's bounded sampler).
-    #[inline]
+    #[inline(always)]
     #[must_use]
     fn sample_reflection(&self, view: &View, u: Vec2) -> Vec3 {
         self.sample(view, u)
@@ -268,7 +268,7 @@ pub trait NormalDistribution {
     ///
     /// For visible normals the `w·m` of the density cancels the Jacobian's:
     /// `D_w(m) / (4 w·m) = G1(w) D(m) / (4 cos θw)`.
-    #[inline]
+    #[inline(always)]
     #[must_use]
     fn pdf_reflection(&self, view: &View, m: Vec3, d: f32) -> f32 {
         let wm = view.w.dot(m);
@@ -293,7 +293,7 @@ pub trait SampleDCos: NormalDistribution {
     fn sample_d_cos(&self, u: Vec2) -> Vec3;
 
     /// The density of [`sample_d_cos`](Self::sample_d_cos): `D(m) max(0, cos θm)`.
-    #[inline]
+    #[inline(always)]
     #[must_use]
     fn pdf_d_cos(&self, m: Vec3) -> f32 {
         self.d(m) * m.z.max(0.0)
@@ -305,7 +305,7 @@ pub trait SampleDCos: NormalDistribution {
 /// A direction below the macro-surface sees the microsurface from the inside, where the
 /// visible microfacets are those that `−w` sees from the outside (pbrt-v4's and Mitsuba 3's
 /// convention for refraction).
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn upper(w: Vec3) -> Vec3 {
     if w.z < 0.0 { -w } else { w }

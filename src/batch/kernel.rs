@@ -1,0 +1,243 @@
+//! The batched loops and their run-time dispatch.
+
+use super::SampleOut;
+use super::lanes::{Lanes, Vec2s, Vec3s, Vec3sMut};
+use crate::bxdf::{BxdfSample, Prepare};
+use crate::spectrum::Spectrum;
+use core::marker::PhantomData;
+use glam::{Vec2, Vec3};
+
+/// A loop to compile for the widest SIMD the CPU has. `run` must be `#[inline(always)]`, so
+/// that it is compiled inside the dispatcher's `#[target_feature]` function, and must
+/// re-slice its inputs to one length itself, so that the compiler sees that every index is in
+/// bounds.
+pub(crate) trait Kernel {
+    /// The loop.
+    fn run(self);
+}
+
+/// A [`Kernel`] as a pulp operation.
+#[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+struct Pulp<K>(K);
+
+#[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+impl<K: Kernel> pulp::WithSimd for Pulp<K> {
+    type Output = ();
+
+    #[inline(always)]
+    fn with_simd<S: pulp::Simd>(self, _simd: S) {
+        self.0.run();
+    }
+}
+
+/// Runs `kernel` compiled for the widest instruction set the CPU has (pulp checks the CPU
+/// once and caches the answer); elsewhere, compiled for the target.
+#[inline(always)]
+pub(crate) fn dispatch<K: Kernel>(kernel: K) {
+    #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+    pulp::Arch::new().dispatch(Pulp(kernel));
+    #[cfg(not(any(target_arch = "x86", target_arch = "x86_64")))]
+    kernel.run();
+}
+
+/// How one lane is computed.
+pub(crate) trait LaneOp<M: Prepare + ?Sized> {
+    /// `eval(wo, wi)`.
+    fn eval(m: &M, wo: Vec3, wi: Vec3) -> M::Spectrum;
+    /// `pdf(wo, wi)`.
+    fn pdf(m: &M, wo: Vec3, wi: Vec3) -> f32;
+    /// `sample(wo, u, uc)`.
+    fn sample(m: &M, wo: Vec3, u: Vec2, uc: f32) -> Option<BxdfSample<M::Spectrum>>;
+}
+
+/// The model's own prepared calls.
+pub(crate) struct Plain;
+
+impl<M: Prepare + ?Sized> LaneOp<M> for Plain {
+    #[inline(always)]
+    fn eval(m: &M, wo: Vec3, wi: Vec3) -> M::Spectrum {
+        m.eval_prepared(&m.prepare(wo), wi)
+    }
+
+    #[inline(always)]
+    fn pdf(m: &M, wo: Vec3, wi: Vec3) -> f32 {
+        m.pdf_prepared(&m.prepare(wo), wi)
+    }
+
+    #[inline(always)]
+    fn sample(m: &M, wo: Vec3, u: Vec2, uc: f32) -> Option<BxdfSample<M::Spectrum>> {
+        m.sample_prepared(&m.prepare(wo), u, uc)
+    }
+}
+
+/// `f[k] = eval(wo[k], wi[k])`.
+pub(crate) struct EvalKernel<'a, 'f, M: Prepare + ?Sized, O>
+where
+    M::Spectrum: Lanes,
+{
+    m: &'a M,
+    wo: Vec3s<'a>,
+    wi: Vec3s<'a>,
+    f: <M::Spectrum as Lanes>::Mut<'f>,
+    n: usize,
+    op: PhantomData<O>,
+}
+
+impl<'a, 'f, M: Prepare + ?Sized, O> EvalKernel<'a, 'f, M, O>
+where
+    M::Spectrum: Lanes,
+{
+    /// The loop over the first `n` lanes (every slice has at least `n`).
+    #[inline(always)]
+    pub(crate) fn new(
+        m: &'a M,
+        wo: Vec3s<'a>,
+        wi: Vec3s<'a>,
+        f: <M::Spectrum as Lanes>::Mut<'f>,
+        n: usize,
+    ) -> Self {
+        Self {
+            m,
+            wo,
+            wi,
+            f,
+            n,
+            op: PhantomData,
+        }
+    }
+}
+
+/// Re-slices a [`Vec3s`] to `n` lanes, in the loop's own function.
+#[inline(always)]
+fn cut(v: Vec3s<'_>, n: usize) -> Vec3s<'_> {
+    Vec3s {
+        x: &v.x[..n],
+        y: &v.y[..n],
+        z: &v.z[..n],
+    }
+}
+
+impl<M: Prepare + ?Sized, O: LaneOp<M>> Kernel for EvalKernel<'_, '_, M, O>
+where
+    M::Spectrum: Lanes,
+{
+    #[inline(always)]
+    fn run(self) {
+        let n = self.n;
+        let (wo, wi) = (cut(self.wo, n), cut(self.wi, n));
+        let mut f = M::Spectrum::truncate(self.f, n);
+        for k in 0..n {
+            M::Spectrum::put(&mut f, k, O::eval(self.m, wo.get(k), wi.get(k)));
+        }
+    }
+}
+
+/// `pdf[k] = pdf(wo[k], wi[k])`.
+pub(crate) struct PdfKernel<'a, 'f, M: ?Sized, O> {
+    m: &'a M,
+    wo: Vec3s<'a>,
+    wi: Vec3s<'a>,
+    pdf: &'f mut [f32],
+    n: usize,
+    op: PhantomData<O>,
+}
+
+impl<'a, 'f, M: ?Sized, O> PdfKernel<'a, 'f, M, O> {
+    /// The loop over the first `n` lanes (every slice has at least `n`).
+    #[inline(always)]
+    pub(crate) fn new(
+        m: &'a M,
+        wo: Vec3s<'a>,
+        wi: Vec3s<'a>,
+        pdf: &'f mut [f32],
+        n: usize,
+    ) -> Self {
+        Self {
+            m,
+            wo,
+            wi,
+            pdf,
+            n,
+            op: PhantomData,
+        }
+    }
+}
+
+impl<M: Prepare + ?Sized, O: LaneOp<M>> Kernel for PdfKernel<'_, '_, M, O> {
+    #[inline(always)]
+    fn run(self) {
+        let n = self.n;
+        let (wo, wi) = (cut(self.wo, n), cut(self.wi, n));
+        for (k, pdf) in self.pdf[..n].iter_mut().enumerate() {
+            *pdf = O::pdf(self.m, wo.get(k), wi.get(k));
+        }
+    }
+}
+
+/// `(wi, f, pdf)[k] = sample(wo[k], u[k], uc[k])`, zeros for no sample.
+pub(crate) struct SampleKernel<'a, 'f, M: Prepare + ?Sized, O>
+where
+    M::Spectrum: Lanes,
+{
+    m: &'a M,
+    wo: Vec3s<'a>,
+    u: Vec2s<'a>,
+    uc: &'a [f32],
+    out: SampleOut<'f, M::Spectrum>,
+    n: usize,
+    op: PhantomData<O>,
+}
+
+impl<'a, 'f, M: Prepare + ?Sized, O> SampleKernel<'a, 'f, M, O>
+where
+    M::Spectrum: Lanes,
+{
+    /// The loop over the first `n` lanes (every slice has at least `n`).
+    #[inline(always)]
+    pub(crate) fn new(
+        m: &'a M,
+        wo: Vec3s<'a>,
+        u: Vec2s<'a>,
+        uc: &'a [f32],
+        out: SampleOut<'f, M::Spectrum>,
+        n: usize,
+    ) -> Self {
+        Self {
+            m,
+            wo,
+            u,
+            uc,
+            out,
+            n,
+            op: PhantomData,
+        }
+    }
+}
+
+impl<M: Prepare + ?Sized, O: LaneOp<M>> Kernel for SampleKernel<'_, '_, M, O>
+where
+    M::Spectrum: Lanes,
+{
+    #[inline(always)]
+    fn run(self) {
+        let n = self.n;
+        let wo = cut(self.wo, n);
+        let u = Vec2s {
+            x: &self.u.x[..n],
+            y: &self.u.y[..n],
+        };
+        let uc = &self.uc[..n];
+        let SampleOut { wi, f, pdf } = self.out;
+        let (mut wi, mut f, pdf): (Vec3sMut<'_>, _, _) =
+            (wi.truncate(n), M::Spectrum::truncate(f, n), &mut pdf[..n]);
+        for k in 0..n {
+            let (w, v, p) = match O::sample(self.m, wo.get(k), u.get(k), uc[k]) {
+                Some(s) => (s.wi, s.f, s.pdf),
+                None => (Vec3::ZERO, M::Spectrum::zero(), 0.0),
+            };
+            wi.put(k, w);
+            M::Spectrum::put(&mut f, k, v);
+            pdf[k] = p;
+        }
+    }
+}

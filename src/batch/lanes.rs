@@ -1,0 +1,201 @@
+//! Structure-of-arrays slices: the batched calls' inputs and outputs.
+
+use super::{LengthError, same_length};
+use crate::spectrum::Spectrum;
+use glam::{Vec2, Vec3, Vec4};
+
+/// Directions (or any 3-vectors) as one slice per coordinate: lane `k` is
+/// `(x[k], y[k], z[k])`.
+#[derive(Clone, Copy, Debug)]
+pub struct Vec3s<'a> {
+    /// The `x` coordinates.
+    pub x: &'a [f32],
+    /// The `y` coordinates.
+    pub y: &'a [f32],
+    /// The `z` coordinates.
+    pub z: &'a [f32],
+}
+
+impl Vec3s<'_> {
+    /// The number of lanes.
+    ///
+    /// # Errors
+    /// [`LengthError`] when the coordinate slices differ in length.
+    #[inline]
+    pub fn lanes(&self) -> Result<usize, LengthError> {
+        same_length(&[self.x.len(), self.y.len(), self.z.len()])
+    }
+
+    /// Lane `k`; `k` must be below the length (panics otherwise).
+    #[inline(always)]
+    #[must_use]
+    pub fn get(&self, k: usize) -> Vec3 {
+        Vec3::new(self.x[k], self.y[k], self.z[k])
+    }
+}
+
+/// Points of the unit square (a sampler's random numbers) as one slice per coordinate.
+#[derive(Clone, Copy, Debug)]
+pub struct Vec2s<'a> {
+    /// The first coordinates.
+    pub x: &'a [f32],
+    /// The second coordinates.
+    pub y: &'a [f32],
+}
+
+impl Vec2s<'_> {
+    /// The number of lanes.
+    ///
+    /// # Errors
+    /// [`LengthError`] when the coordinate slices differ in length.
+    #[inline]
+    pub fn lanes(&self) -> Result<usize, LengthError> {
+        same_length(&[self.x.len(), self.y.len()])
+    }
+
+    /// Lane `k`; `k` must be below the length (panics otherwise).
+    #[inline(always)]
+    #[must_use]
+    pub fn get(&self, k: usize) -> Vec2 {
+        Vec2::new(self.x[k], self.y[k])
+    }
+}
+
+/// Slices to write 3-vectors (directions, RGB values) into, one per coordinate.
+#[derive(Debug)]
+pub struct Vec3sMut<'a> {
+    /// The `x` coordinates (red).
+    pub x: &'a mut [f32],
+    /// The `y` coordinates (green).
+    pub y: &'a mut [f32],
+    /// The `z` coordinates (blue).
+    pub z: &'a mut [f32],
+}
+
+impl<'a> Vec3sMut<'a> {
+    /// The number of lanes.
+    ///
+    /// # Errors
+    /// [`LengthError`] when the coordinate slices differ in length.
+    #[inline]
+    pub fn lanes(&self) -> Result<usize, LengthError> {
+        same_length(&[self.x.len(), self.y.len(), self.z.len()])
+    }
+
+    /// The first `n` lanes (`n` must not exceed the length).
+    #[inline(always)]
+    pub(crate) fn truncate(self, n: usize) -> Self {
+        Self {
+            x: &mut self.x[..n],
+            y: &mut self.y[..n],
+            z: &mut self.z[..n],
+        }
+    }
+
+    /// Writes lane `k`.
+    #[inline(always)]
+    pub(crate) fn put(&mut self, k: usize, v: Vec3) {
+        self.x[k] = v.x;
+        self.y[k] = v.y;
+        self.z[k] = v.z;
+    }
+}
+
+/// Slices to write four-channel values (four wavelengths) into, one per channel.
+#[derive(Debug)]
+pub struct Vec4sMut<'a> {
+    /// The first channel.
+    pub x: &'a mut [f32],
+    /// The second channel.
+    pub y: &'a mut [f32],
+    /// The third channel.
+    pub z: &'a mut [f32],
+    /// The fourth channel.
+    pub w: &'a mut [f32],
+}
+
+/// A [`Spectrum`] whose batched values go to one slice per channel: `&mut [f32]` for `f32`,
+/// [`Vec3sMut`] for `Vec3`, [`Vec4sMut`] for `Vec4`.
+pub trait Lanes: Spectrum {
+    /// The slices a batched call writes this spectrum's values into.
+    type Mut<'a>;
+
+    /// The number of lanes of `out`.
+    ///
+    /// # Errors
+    /// [`LengthError`] when its channel slices differ in length.
+    fn lanes(out: &Self::Mut<'_>) -> Result<usize, LengthError>;
+
+    /// The first `n` lanes of `out` (`n` must not exceed its length).
+    #[doc(hidden)]
+    fn truncate<'a>(out: Self::Mut<'a>, n: usize) -> Self::Mut<'a>;
+
+    /// Writes `v` to lane `k` of `out`.
+    #[doc(hidden)]
+    fn put(out: &mut Self::Mut<'_>, k: usize, v: Self);
+}
+
+impl Lanes for f32 {
+    type Mut<'a> = &'a mut [f32];
+
+    #[inline]
+    fn lanes(out: &&mut [f32]) -> Result<usize, LengthError> {
+        Ok(out.len())
+    }
+
+    #[inline(always)]
+    fn truncate<'a>(out: Self::Mut<'a>, n: usize) -> Self::Mut<'a> {
+        &mut out[..n]
+    }
+
+    #[inline(always)]
+    fn put(out: &mut &mut [f32], k: usize, v: f32) {
+        out[k] = v;
+    }
+}
+
+impl Lanes for Vec3 {
+    type Mut<'a> = Vec3sMut<'a>;
+
+    #[inline]
+    fn lanes(out: &Vec3sMut<'_>) -> Result<usize, LengthError> {
+        out.lanes()
+    }
+
+    #[inline(always)]
+    fn truncate<'a>(out: Self::Mut<'a>, n: usize) -> Self::Mut<'a> {
+        out.truncate(n)
+    }
+
+    #[inline(always)]
+    fn put(out: &mut Vec3sMut<'_>, k: usize, v: Vec3) {
+        out.put(k, v);
+    }
+}
+
+impl Lanes for Vec4 {
+    type Mut<'a> = Vec4sMut<'a>;
+
+    #[inline]
+    fn lanes(out: &Vec4sMut<'_>) -> Result<usize, LengthError> {
+        same_length(&[out.x.len(), out.y.len(), out.z.len(), out.w.len()])
+    }
+
+    #[inline(always)]
+    fn truncate<'a>(out: Self::Mut<'a>, n: usize) -> Self::Mut<'a> {
+        Vec4sMut {
+            x: &mut out.x[..n],
+            y: &mut out.y[..n],
+            z: &mut out.z[..n],
+            w: &mut out.w[..n],
+        }
+    }
+
+    #[inline(always)]
+    fn put(out: &mut Vec4sMut<'_>, k: usize, v: Vec4) {
+        out.x[k] = v.x;
+        out.y[k] = v.y;
+        out.z[k] = v.z;
+        out.w[k] = v.w;
+    }
+}

@@ -1,0 +1,209 @@
+//! Batched shading: `eval`, `pdf` and `sample` over structure-of-arrays batches, compiled for
+//! the widest SIMD the CPU has.
+//!
+//! A renderer that shades many points at once (a wavefront path tracer, a GPU-style
+//! queue on the CPU) hands a model slices of directions and random numbers, one slice per
+//! coordinate ([`Vec3s`], [`Vec2s`]), and slices to write into: the values per channel
+//! ([`Lanes`]), the densities, the sampled directions ([`Vec3sMut`]). Every model of the crate
+//! implements [`Batch`]:
+//!
+//! ```
+//! use lobe::batch::{Batch, Vec3s, Vec3sMut};
+//! use lobe::bxdf::{Bxdf, Microfacet};
+//! use lobe::fresnel::Schlick;
+//! use lobe::microfacet::{Ggx, Masking};
+//! use lobe::{Alpha, Vec3};
+//! let brdf = Microfacet::new(
+//!     Ggx::isotropic(Alpha::new(0.3)?),
+//!     Masking::HeightCorrelated,
+//!     Schlick::new(Vec3::new(0.95, 0.64, 0.54))?,
+//! );
+//! // Two viewer and two light directions, one slice per coordinate.
+//! let wo = Vec3s { x: &[0.0, 0.6], y: &[0.6, 0.0], z: &[0.8, 0.8] };
+//! let wi = Vec3s { x: &[0.0, -0.6], y: &[-0.6, 0.0], z: &[0.8, 0.8] };
+//! let (mut r, mut g, mut b) = ([0.0; 2], [0.0; 2], [0.0; 2]);
+//! brdf.eval_batch(wo, wi, Vec3sMut { x: &mut r, y: &mut g, z: &mut b })?;
+//! let one = brdf.eval(Vec3::new(0.6, 0.0, 0.8), Vec3::new(-0.6, 0.0, 0.8));
+//! assert_eq!(Vec3::new(r[1], g[1], b[1]), one); // the scalar path's value, bit for bit
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+//!
+//! **The same numbers as the scalar path.** A batched call runs the model's own scalar code
+//! ([`Prepare`]) on every lane: nothing is written twice, and the results
+//! equal `eval`, `pdf` and `sample` bit for bit where the compiler keeps the operations as
+//! written (it does not contract or reassociate `f32` arithmetic, so that is every lane the
+//! tests have seen; `tests/batch.rs` checks adversarial lanes — grazing, below the horizon,
+//! mirror pairs — against the scalar calls).
+//!
+//! **Speed.** The loops are written so that the compiler vectorises them: inputs and outputs
+//! are separate slices re-sliced to one length (no bounds checks inside the loop), the
+//! per-lane code is inlined, its early returns become selects, and what the loop would
+//! branch on per call (a microfacet model's masking term) is fixed outside it. The hot
+//! models' lane code has no library calls (sine and cosine are [`crate::math::sin_cos_turns`]);
+//! a lane that calls one (Beckmann's `erfc`, Phong's `powf`) still runs, one lane at a time.
+//!
+//! **Run-time dispatch.** The default `x86_64` target has only SSE2, and a library cannot
+//! ask its users for `-C target-cpu=native`. On x86 and x86_64 each batched call asks the
+//! [`pulp`](https://docs.rs/pulp) crate for the widest instruction set the CPU has — AVX-512
+//! (x86-64-v4), AVX2 with FMA (v3), or the baseline — and runs the loop compiled for it. pulp
+//! does the `unsafe` part (calling a `#[target_feature]` function after checking the CPU), so
+//! this crate keeps `#![forbid(unsafe_code)]`; it was chosen over hand-written intrinsics for
+//! that, and over `multiversion`, whose generated code is `unsafe` in the calling crate. Other
+//! targets, and `no_std` builds without a CPU check, run the same loop compiled for the
+//! target's own features: the portable fallback.
+//!
+//! **Lengths.** Every slice of a call must have the same length; otherwise the call writes
+//! nothing and returns [`LengthError`]. It never panics.
+
+mod kernel;
+mod lanes;
+mod models;
+
+pub use lanes::{Lanes, Vec2s, Vec3s, Vec3sMut, Vec4sMut};
+
+use crate::bxdf::Prepare;
+use core::fmt;
+use kernel::{EvalKernel, LaneOp, PdfKernel, Plain, SampleKernel, dispatch};
+
+/// A batched call's slices disagree in length; nothing was written.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct LengthError {
+    /// The first slice's length.
+    pub expected: usize,
+    /// A slice whose length differs.
+    pub found: usize,
+}
+
+impl fmt::Display for LengthError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "batched slices differ in length: {} and {}",
+            self.expected, self.found
+        )
+    }
+}
+
+#[cfg(feature = "std")]
+impl std::error::Error for LengthError {}
+
+/// `Ok(n)` when every length in `lens` is `n`.
+fn same_length(lens: &[usize]) -> Result<usize, LengthError> {
+    let n = lens.first().copied().unwrap_or(0);
+    match lens.iter().find(|&&l| l != n) {
+        Some(&found) => Err(LengthError { expected: n, found }),
+        None => Ok(n),
+    }
+}
+
+/// Where [`Batch::sample_batch`] writes: the sampled directions, their values and their
+/// densities. A lane without a sample (the scalar `sample` returned `None`) has `pdf = 0`,
+/// `f = 0` and `wi = 0`.
+pub struct SampleOut<'a, S: Lanes> {
+    /// The sampled directions `wi`.
+    pub wi: Vec3sMut<'a>,
+    /// The values `f(wo, wi)`, per channel.
+    pub f: S::Mut<'a>,
+    /// The densities; `0` marks a lane without a sample.
+    pub pdf: &'a mut [f32],
+}
+
+/// A model's `eval`, `pdf` and `sample` over batches: see the [module docs](self).
+///
+/// Every model of the crate implements it; a model of your own that implements
+/// [`Prepare`] gets it from `impl Batch for MyModel {}`.
+pub trait Batch: Prepare
+where
+    Self::Spectrum: Lanes,
+{
+    /// `f[k] = eval(wo[k], wi[k])` for every lane `k`.
+    ///
+    /// # Errors
+    /// [`LengthError`] when the slices differ in length (nothing is written).
+    fn eval_batch(
+        &self,
+        wo: Vec3s<'_>,
+        wi: Vec3s<'_>,
+        f: <Self::Spectrum as Lanes>::Mut<'_>,
+    ) -> Result<(), LengthError> {
+        eval_with::<Self, Plain>(self, wo, wi, f)
+    }
+
+    /// `pdf[k] = pdf(wo[k], wi[k])` for every lane `k`.
+    ///
+    /// # Errors
+    /// [`LengthError`] when the slices differ in length (nothing is written).
+    fn pdf_batch(&self, wo: Vec3s<'_>, wi: Vec3s<'_>, pdf: &mut [f32]) -> Result<(), LengthError> {
+        pdf_with::<Self, Plain>(self, wo, wi, pdf)
+    }
+
+    /// `sample(wo[k], u[k], uc[k])` for every lane `k`, written to `out`.
+    ///
+    /// # Errors
+    /// [`LengthError`] when the slices differ in length (nothing is written).
+    fn sample_batch(
+        &self,
+        wo: Vec3s<'_>,
+        u: Vec2s<'_>,
+        uc: &[f32],
+        out: SampleOut<'_, Self::Spectrum>,
+    ) -> Result<(), LengthError> {
+        sample_with::<Self, Plain>(self, wo, u, uc, out)
+    }
+}
+
+/// [`Batch::eval_batch`] with the lane operation `O`.
+#[inline(always)]
+fn eval_with<'a, 'f, M: Prepare + ?Sized, O: LaneOp<M>>(
+    m: &'a M,
+    wo: Vec3s<'a>,
+    wi: Vec3s<'a>,
+    f: <M::Spectrum as Lanes>::Mut<'f>,
+) -> Result<(), LengthError>
+where
+    M::Spectrum: Lanes,
+{
+    let n = same_length(&[wo.lanes()?, wi.lanes()?, M::Spectrum::lanes(&f)?])?;
+    dispatch(EvalKernel::<M, O>::new(m, wo, wi, f, n));
+    Ok(())
+}
+
+/// [`Batch::pdf_batch`] with the lane operation `O`.
+#[inline(always)]
+fn pdf_with<'a, M: Prepare + ?Sized, O: LaneOp<M>>(
+    m: &'a M,
+    wo: Vec3s<'a>,
+    wi: Vec3s<'a>,
+    pdf: &mut [f32],
+) -> Result<(), LengthError>
+where
+    M::Spectrum: Lanes,
+{
+    let n = same_length(&[wo.lanes()?, wi.lanes()?, pdf.len()])?;
+    dispatch(PdfKernel::<M, O>::new(m, wo, wi, pdf, n));
+    Ok(())
+}
+
+/// [`Batch::sample_batch`] with the lane operation `O`.
+#[inline(always)]
+fn sample_with<'a, 'f, M: Prepare + ?Sized, O: LaneOp<M>>(
+    m: &'a M,
+    wo: Vec3s<'a>,
+    u: Vec2s<'a>,
+    uc: &'a [f32],
+    out: SampleOut<'f, M::Spectrum>,
+) -> Result<(), LengthError>
+where
+    M::Spectrum: Lanes,
+{
+    let n = same_length(&[
+        wo.lanes()?,
+        u.lanes()?,
+        uc.len(),
+        out.wi.lanes()?,
+        M::Spectrum::lanes(&out.f)?,
+        out.pdf.len(),
+    ])?;
+    dispatch(SampleKernel::<M, O>::new(m, wo, u, uc, out, n));
+    Ok(())
+}

@@ -1,0 +1,160 @@
+//! Every model's [`Batch`] implementation.
+
+use super::Batch;
+use crate::bxdf::{
+    BlinnPhong, DisneyDiffuse, EnergyPreservingOrenNayar, Glazed, Lambert, Microfacet, Mirror,
+    OrenNayar, Phong, Plastic, RoughDielectric, SmoothDielectric, ThinDielectric,
+};
+use crate::fresnel::Fresnel;
+use crate::microfacet::NormalDistribution;
+use crate::spectrum::Spectrum;
+
+use super::kernel::LaneOp;
+use super::{Lanes, LengthError, SampleOut, Vec2s, Vec3s, eval_with, sample_with};
+use crate::bxdf::{BxdfSample, Prepare};
+use crate::microfacet::Masking;
+use glam::{Vec2, Vec3};
+
+impl<S: Spectrum + Lanes> Batch for Lambert<S> {}
+impl<S: Spectrum + Lanes> Batch for OrenNayar<S> {}
+impl<S: Spectrum + Lanes> Batch for EnergyPreservingOrenNayar<S> {}
+impl<S: Spectrum + Lanes> Batch for DisneyDiffuse<S> {}
+impl<S: Spectrum + Lanes> Batch for Phong<S> {}
+impl<S: Spectrum + Lanes> Batch for BlinnPhong<S> {}
+impl<S: Spectrum + Lanes> Batch for Glazed<S> {}
+impl<D: NormalDistribution, S: Spectrum + Lanes> Batch for Plastic<D, S> {}
+impl<F: Fresnel> Batch for Mirror<F> where F::Spectrum: Lanes {}
+impl Batch for SmoothDielectric {}
+impl Batch for ThinDielectric {}
+/// A model whose value depends on a masking term chosen at run time: the batched loops fix
+/// it at compile time, so that the loop does not branch on it.
+trait Masked: Prepare {
+    /// The model's masking term.
+    fn masking_term(&self) -> Masking;
+    /// `eval` under `masking`.
+    fn eval_masked(&self, wo: Vec3, wi: Vec3, masking: Masking) -> Self::Spectrum;
+    /// `sample` under `masking`.
+    fn sample_masked(
+        &self,
+        wo: Vec3,
+        u: Vec2,
+        uc: f32,
+        masking: Masking,
+    ) -> Option<BxdfSample<Self::Spectrum>>;
+}
+
+impl<D: NormalDistribution, F: Fresnel> Masked for Microfacet<D, F> {
+    #[inline(always)]
+    fn masking_term(&self) -> Masking {
+        self.masking()
+    }
+
+    #[inline(always)]
+    fn eval_masked(&self, wo: Vec3, wi: Vec3, masking: Masking) -> F::Spectrum {
+        self.eval_with(&self.prepare(wo), wi, masking)
+    }
+
+    #[inline(always)]
+    fn sample_masked(
+        &self,
+        wo: Vec3,
+        u: Vec2,
+        _uc: f32,
+        masking: Masking,
+    ) -> Option<BxdfSample<F::Spectrum>> {
+        self.sample_with(&self.prepare(wo), u, masking)
+    }
+}
+
+impl<D: NormalDistribution> Masked for RoughDielectric<D> {
+    #[inline(always)]
+    fn masking_term(&self) -> Masking {
+        self.masking()
+    }
+
+    #[inline(always)]
+    fn eval_masked(&self, wo: Vec3, wi: Vec3, masking: Masking) -> f32 {
+        self.eval_with(&self.prepare(wo), wi, masking)
+    }
+
+    #[inline(always)]
+    fn sample_masked(
+        &self,
+        wo: Vec3,
+        u: Vec2,
+        uc: f32,
+        masking: Masking,
+    ) -> Option<BxdfSample<f32>> {
+        self.sample_with(&self.prepare(wo), u, uc, masking)
+    }
+}
+
+/// A [`Masked`] model's lanes with the masking term `MASKINGS[K]`.
+struct FixedMasking<const K: usize>;
+
+/// The masking terms, by [`FixedMasking`]'s index.
+const MASKINGS: [Masking; 3] = [
+    Masking::HeightCorrelated,
+    Masking::Separable,
+    Masking::VCavity,
+];
+
+impl<const K: usize, M: Masked> LaneOp<M> for FixedMasking<K> {
+    #[inline(always)]
+    fn eval(m: &M, wo: Vec3, wi: Vec3) -> M::Spectrum {
+        m.eval_masked(wo, wi, MASKINGS[K])
+    }
+
+    #[inline(always)]
+    fn pdf(m: &M, wo: Vec3, wi: Vec3) -> f32 {
+        m.pdf_prepared(&m.prepare(wo), wi)
+    }
+
+    #[inline(always)]
+    fn sample(m: &M, wo: Vec3, u: Vec2, uc: f32) -> Option<BxdfSample<M::Spectrum>> {
+        m.sample_masked(wo, u, uc, MASKINGS[K])
+    }
+}
+
+/// Chooses the loop for the model's masking term.
+macro_rules! by_masking {
+    ($m:expr, $run:ident($($arg:expr),*)) => {
+        match $m.masking_term() {
+            Masking::HeightCorrelated => $run::<_, FixedMasking<0>>($m, $($arg),*),
+            Masking::Separable => $run::<_, FixedMasking<1>>($m, $($arg),*),
+            Masking::VCavity => $run::<_, FixedMasking<2>>($m, $($arg),*),
+        }
+    };
+}
+
+/// `Batch` for a [`Masked`] model: its `eval` and `sample` loops by masking term.
+macro_rules! batch_by_masking {
+    (impl<$($g:ident: $b:path),*> for $t:ty where $s:ty) => {
+        impl<$($g: $b),*> Batch for $t
+        where
+            $s: Lanes,
+        {
+            fn eval_batch(
+                &self,
+                wo: Vec3s<'_>,
+                wi: Vec3s<'_>,
+                f: <$s as Lanes>::Mut<'_>,
+            ) -> Result<(), LengthError> {
+                by_masking!(self, eval_with(wo, wi, f))
+            }
+
+            fn sample_batch(
+                &self,
+                wo: Vec3s<'_>,
+                u: Vec2s<'_>,
+                uc: &[f32],
+                out: SampleOut<'_, $s>,
+            ) -> Result<(), LengthError> {
+                by_masking!(self, sample_with(wo, u, uc, out))
+            }
+        }
+    };
+}
+
+batch_by_masking!(impl<D: NormalDistribution, F: Fresnel> for Microfacet<D, F> where F::Spectrum);
+batch_by_masking!(impl<D: NormalDistribution> for RoughDielectric<D> where f32);
