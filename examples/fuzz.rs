@@ -933,10 +933,8 @@ fn main() {
     };
     // Panics are expected and counted: keep their messages for the report, not stderr.
     std::panic::set_hook(Box::new(|info| {
-        let message = match info.location() {
-            Some(l) => format!("{info} at {}:{}", l.file(), l.line()),
-            None => info.to_string(),
-        };
+        // "panicked at file:line:column:\nmessage"
+        let message = info.to_string().replace('\n', " ");
         PANIC.with(|p| *p.borrow_mut() = message);
     }));
 
