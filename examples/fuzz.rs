@@ -1,0 +1,1065 @@
+//! Fuzzes every model through adversarial inputs and counts the bad values (issue 9, item 7).
+//!
+//! ```sh
+//! cargo run --release --example fuzz -- 100000
+//! ```
+//!
+//! The argument is the number of random inputs per configuration (default 100,000); each
+//! configuration also runs a fixed grid of corner inputs first. A configuration is one model
+//! with one set of parameters: all 14 models, every distribution and masking term for the
+//! microfacet ones, both transport modes for the dielectrics, `f32` and RGB where the model
+//! is generic over its spectrum, with widths at both ends of their range (`α` = 1e-4 and 10,
+//! anisotropic 1e-4 × 10), relative indices `η` = 1, 1 ± 1e-4, 1e±3, 1.5, 1/1.5, and complex
+//! indices with `κ` up to 50.
+//!
+//! The inputs: cosines `0, ±1e-7, ±1e-20, ±1` and uniform on the sphere; azimuths random or
+//! exactly on an axis; `wi = wo`, `wi = −wo`, the mirror pair `(−wo.x, −wo.y, wo.z)`, the
+//! refraction pair through the macro-surface (for the dielectrics), a slightly perturbed
+//! mirror pair; directions of length `1 ± 1e-6`; `u` and `uc` at `0`, `1 − 2⁻²⁴`, `1` and
+//! random. For each input it calls `eval`, `pdf`, `sample`, `prepare`, `eval_prepared`,
+//! `pdf_prepared`, `eval_pdf_prepared` and `sample_prepared`, and counts, per model:
+//!
+//! * **NaN**, **inf**, **neg**: results (a value's channel, a density, a sample's direction,
+//!   value or pdf) that are NaN, infinite, or negative;
+//! * **non-unit**: samples whose `||wi| − 1|` exceeds 1e-3;
+//! * **bad sample**: samples with `pdf ≤ 0` (or not finite), a non-finite weight
+//!   `f |cos θi| / pdf`, or a crossed index `eta` that is not positive and finite;
+//! * **split**: `eval_pdf_prepared` differing from `(eval_prepared, pdf_prepared)` in any bit
+//!   (the models share work between the two, and a renderer's MIS relies on the two paths
+//!   agreeing);
+//! * **panics**: inputs whose calls panicked (each batch of calls runs under
+//!   `catch_unwind`; a batch that panicked is replayed input by input to find them).
+//!
+//! It prints the table (with, per model, how many of the bad results came from inputs with a
+//! random number equal to 1, outside the documented `[0, 1)`), then, when a count is not zero,
+//! the failing configurations and the first failing inputs exactly (model, parameters, call,
+//! `wo`, `wi`, `u`, `uc`, the value; `{:?}` prints an `f32` so that it parses back to the same
+//! bits), and exits with status 1. Deterministic: every configuration draws from its own
+//! seeded `Pcg32` stream, whatever the number of threads.
+
+use lobe::bxdf::{
+    BlinnPhong, BlinnPhongForm, Bxdf, BxdfSample, DisneyDiffuse, EnergyPreservingOrenNayar, Glazed,
+    Lambert, Microfacet, Mirror, OrenNayar, Phong, Plastic, Prepare, RoughDielectric,
+    SmoothDielectric, ThinDielectric, TransportMode,
+};
+use lobe::fresnel::{Conductor, Dielectric, Fresnel, NoFresnel, Schlick};
+use lobe::microfacet::{
+    Beckmann, BeckmannMasking, BlinnPhongNdf, Ggx, Gtr, Masking, NormalDistribution,
+};
+use lobe::verify::Pcg32;
+use lobe::{Alpha, ComplexIor, Eta, Roughness, Spectrum, Vec2, Vec3};
+use std::cell::RefCell;
+use std::fmt::Write as _;
+use std::panic::{AssertUnwindSafe, catch_unwind};
+use std::sync::Mutex;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::time::Instant;
+
+/// The seed of every configuration's stream (the stream is the configuration's index).
+const SEED: u64 = 0xf022;
+/// Inputs per `catch_unwind` batch.
+const BATCH: usize = 4096;
+/// How far a sample's `|wi|` may be from 1.
+const UNIT_TOLERANCE: f32 = 1e-3;
+/// Failing inputs printed per model and kind of failure.
+const SHOWN: usize = 3;
+
+// ---------------------------------------------------------------------------------------
+// Inputs
+// ---------------------------------------------------------------------------------------
+
+/// One input of every call.
+#[derive(Clone, Copy, Debug)]
+struct Input {
+    wo: Vec3,
+    wi: Vec3,
+    u: Vec2,
+    uc: f32,
+}
+
+/// The adversarial cosines.
+const COSINES: [f32; 7] = [0.0, 1e-7, -1e-7, 1e-20, -1e-20, 1.0, -1.0];
+/// `1 − 2⁻²⁴`, the largest `f32` below 1.
+const ONE_MINUS: f32 = 1.0 - 1.0 / 16_777_216.0;
+/// The adversarial random numbers (`1` is outside the documented `[0, 1)`, and tried anyway).
+const US: [f32; 3] = [0.0, ONE_MINUS, 1.0];
+
+/// How `wi` is made from `wo`.
+#[derive(Clone, Copy)]
+enum Pair {
+    /// A direction of its own.
+    Free,
+    Same,
+    Opposite,
+    Mirror,
+    /// Refracted through the macro-surface with the configuration's `η` (the mirror pair
+    /// under total internal reflection or without an index).
+    Refracted,
+    /// The mirror pair tilted by about 1e-3.
+    NearMirror,
+}
+
+const PAIRS: [Pair; 5] = [
+    Pair::Same,
+    Pair::Opposite,
+    Pair::Mirror,
+    Pair::Refracted,
+    Pair::NearMirror,
+];
+
+/// A direction with cosine `z` and an azimuth that is random or (one time in four) exactly
+/// on an axis or a diagonal.
+fn with_cos(z: f32, rng: &mut Pcg32) -> Vec3 {
+    let r = (1.0 - z * z).max(0.0).sqrt();
+    if rng.next_f32() < 0.25 {
+        let d = core::f32::consts::FRAC_1_SQRT_2 * r;
+        match rng.next_u32() % 4 {
+            0 => Vec3::new(r, 0.0, z),
+            1 => Vec3::new(0.0, -r, z),
+            2 => Vec3::new(-d, d, z),
+            _ => Vec3::new(d, d, z),
+        }
+    } else {
+        let phi = core::f32::consts::TAU * rng.next_f32();
+        Vec3::new(r * phi.cos(), r * phi.sin(), z)
+    }
+}
+
+/// A cosine: one of [`COSINES`], or uniform in `[-1, 1]` (a uniform direction on the
+/// sphere), or uniform within 1e-3 of the horizon.
+fn cosine(rng: &mut Pcg32) -> f32 {
+    match rng.next_u32() % 4 {
+        0 => COSINES[rng.next_u32() as usize % COSINES.len()],
+        1 => 1e-3 * (2.0 * rng.next_f32() - 1.0),
+        _ => 2.0 * rng.next_f32() - 1.0,
+    }
+}
+
+fn paired(wo: Vec3, pair: Pair, eta: Option<Eta>, rng: &mut Pcg32) -> Vec3 {
+    let mirror = Vec3::new(-wo.x, -wo.y, wo.z);
+    match pair {
+        Pair::Free => with_cos(cosine(rng), rng),
+        Pair::Same => wo,
+        Pair::Opposite => -wo,
+        Pair::Mirror => mirror,
+        Pair::Refracted => eta
+            .and_then(|eta| lobe::frame::refract(wo, Vec3::Z, eta))
+            .unwrap_or(mirror),
+        Pair::NearMirror => {
+            let t = 1e-3 * (Vec3::new(rng.next_f32(), rng.next_f32(), rng.next_f32()) - 0.5);
+            (mirror + t).normalize_or(mirror)
+        }
+    }
+}
+
+/// A random number: one of [`US`] one time in four, else uniform in `[0, 1)`.
+fn unit(rng: &mut Pcg32) -> f32 {
+    if rng.next_f32() < 0.25 {
+        US[rng.next_u32() as usize % US.len()]
+    } else {
+        rng.next_f32()
+    }
+}
+
+/// A length off 1 by `±1e-6`, one time in four.
+fn stretch(rng: &mut Pcg32) -> f32 {
+    match rng.next_u32() % 8 {
+        0 => 1.0 + 1e-6,
+        1 => 1.0 - 1e-6,
+        _ => 1.0,
+    }
+}
+
+/// A random adversarial input.
+fn random_input(eta: Option<Eta>, rng: &mut Pcg32) -> Input {
+    let wo = with_cos(cosine(rng), rng);
+    let pair = if rng.next_f32() < 0.5 {
+        Pair::Free
+    } else {
+        PAIRS[rng.next_u32() as usize % PAIRS.len()]
+    };
+    let wi = paired(wo, pair, eta, rng);
+    Input {
+        wo: wo * stretch(rng),
+        wi: wi * stretch(rng),
+        u: Vec2::new(unit(rng), unit(rng)),
+        uc: unit(rng),
+    }
+}
+
+/// The corner grid: every adversarial cosine of `wo` against every cosine and every pairing
+/// of `wi`, with every corner of `(u, uc)` (azimuths random).
+fn corner_inputs(eta: Option<Eta>, rng: &mut Pcg32) -> Vec<Input> {
+    let mut inputs = Vec::new();
+    for &co in &COSINES {
+        let wo = with_cos(co, rng);
+        let mut wis: Vec<Vec3> = COSINES.iter().map(|&ci| with_cos(ci, rng)).collect();
+        wis.extend(PAIRS.iter().map(|&p| paired(wo, p, eta, rng)));
+        for &wi in &wis {
+            for &ux in &US {
+                for &uy in &US {
+                    for &uc in &US {
+                        let u = Vec2::new(ux, uy);
+                        inputs.push(Input { wo, wi, u, uc });
+                    }
+                }
+            }
+        }
+    }
+    inputs
+}
+
+// ---------------------------------------------------------------------------------------
+// Checks
+// ---------------------------------------------------------------------------------------
+
+/// The kinds of failure, in the table's order.
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+enum Kind {
+    Nan,
+    Inf,
+    Negative,
+    NonUnit,
+    BadSample,
+    Split,
+    Panic,
+}
+
+const KINDS: [Kind; 7] = [
+    Kind::Nan,
+    Kind::Inf,
+    Kind::Negative,
+    Kind::NonUnit,
+    Kind::BadSample,
+    Kind::Split,
+    Kind::Panic,
+];
+
+impl Kind {
+    fn header(self) -> &'static str {
+        match self {
+            Kind::Nan => "NaN",
+            Kind::Inf => "inf",
+            Kind::Negative => "neg",
+            Kind::NonUnit => "non-unit",
+            Kind::BadSample => "bad sample",
+            Kind::Split => "split",
+            Kind::Panic => "panics",
+        }
+    }
+}
+
+/// A failing input, as printed.
+#[derive(Clone, Debug)]
+struct Failure {
+    kind: Kind,
+    call: &'static str,
+    input: Input,
+    value: String,
+}
+
+/// Counts and the first failures of a run.
+#[derive(Clone, Debug, Default)]
+struct Tally {
+    inputs: u64,
+    counts: [u64; KINDS.len()],
+    /// The bad results of inputs with `u.x`, `u.y` or `uc` equal to 1 (outside the
+    /// documented `[0, 1)`).
+    at_one: u64,
+    failures: Vec<Failure>,
+}
+
+/// True when the two inputs are the same, bit for bit.
+fn same_input(a: &Input, b: &Input) -> bool {
+    let bits = |x: &Input| {
+        [
+            x.wo.x, x.wo.y, x.wo.z, x.wi.x, x.wi.y, x.wi.z, x.u.x, x.u.y, x.uc,
+        ]
+        .map(f32::to_bits)
+    };
+    bits(a) == bits(b)
+}
+
+/// True when a random number of the input is 1.
+fn has_one(x: &Input) -> bool {
+    x.u.x == 1.0 || x.u.y == 1.0 || x.uc == 1.0
+}
+
+impl Tally {
+    fn add(&mut self, other: Tally) {
+        self.inputs += other.inputs;
+        self.at_one += other.at_one;
+        for (a, b) in self.counts.iter_mut().zip(other.counts) {
+            *a += b;
+        }
+        for f in other.failures {
+            self.note(f);
+        }
+    }
+
+    /// Keeps `f` if fewer than [`SHOWN`] failures of its kind are kept, none of them on the
+    /// same input (`sample` and `sample_prepared` fail together).
+    fn note(&mut self, f: Failure) {
+        let kept = || self.failures.iter().filter(|g| g.kind == f.kind);
+        if kept().count() < SHOWN && !kept().any(|g| same_input(&g.input, &f.input)) {
+            self.failures.push(f);
+        }
+    }
+
+    fn fail(&mut self, kind: Kind, call: &'static str, input: &Input, value: &dyn std::fmt::Debug) {
+        self.counts[kind as usize] += 1;
+        if has_one(input) {
+            self.at_one += 1;
+        }
+        if self.failures.iter().filter(|g| g.kind == kind).count() < SHOWN {
+            self.note(Failure {
+                kind,
+                call,
+                input: *input,
+                value: format!("{value:?}"),
+            });
+        }
+    }
+
+    fn total(&self) -> u64 {
+        self.counts.iter().sum()
+    }
+
+    /// Counts one result whose numbers are `xs`, of which `signed` may be negative: NaN,
+    /// infinite, negative, each at most once.
+    fn numbers(
+        &mut self,
+        call: &'static str,
+        input: &Input,
+        signed: impl Iterator<Item = f32>,
+        xs: impl Iterator<Item = f32>,
+        value: &dyn std::fmt::Debug,
+    ) {
+        let (mut nan, mut inf, mut neg) = (false, false, false);
+        for x in signed {
+            nan |= x.is_nan();
+            inf |= x.is_infinite();
+        }
+        for x in xs {
+            nan |= x.is_nan();
+            inf |= x.is_infinite();
+            neg |= x < 0.0;
+        }
+        if nan {
+            self.fail(Kind::Nan, call, input, value);
+        }
+        if inf {
+            self.fail(Kind::Inf, call, input, value);
+        }
+        if neg {
+            self.fail(Kind::Negative, call, input, value);
+        }
+    }
+
+    fn value<S: Spectrum>(&mut self, call: &'static str, input: &Input, f: S) {
+        let xs = (0..S::CHANNELS).map(|c| f.channel(c));
+        self.numbers(call, input, core::iter::empty(), xs, &f);
+    }
+
+    fn density(&mut self, call: &'static str, input: &Input, p: f32) {
+        self.numbers(call, input, core::iter::empty(), core::iter::once(p), &p);
+    }
+
+    fn sample<S: Spectrum>(&mut self, call: &'static str, input: &Input, s: Option<BxdfSample<S>>) {
+        let Some(s) = s else { return };
+        // The direction's components may be negative; the value and the pdf may not.
+        let signed = s.wi.to_array().into_iter().chain([s.eta]);
+        let xs = (0..S::CHANNELS).map(|c| s.f.channel(c)).chain([s.pdf]);
+        self.numbers(call, input, signed, xs, &s);
+        if s.wi.is_finite() && (s.wi.length() - 1.0).abs() > UNIT_TOLERANCE {
+            self.fail(Kind::NonUnit, call, input, &s);
+        }
+        let w = s.weight();
+        let weight_finite = (0..S::CHANNELS).all(|c| w.channel(c).is_finite());
+        let valid =
+            s.pdf > 0.0 && s.pdf.is_finite() && weight_finite && s.eta > 0.0 && s.eta.is_finite();
+        if !valid {
+            self.fail(Kind::BadSample, call, input, &s);
+        }
+    }
+}
+
+/// Bit-for-bit equality, channel by channel.
+fn same_bits<S: Spectrum>(a: S, b: S) -> bool {
+    (0..S::CHANNELS).all(|c| a.channel(c).to_bits() == b.channel(c).to_bits())
+}
+
+/// Every call on one input.
+fn check_input<M: Prepare>(m: &M, x: &Input, t: &mut Tally) {
+    t.inputs += 1;
+    t.value("eval", x, Bxdf::eval(m, x.wo, x.wi));
+    t.density("pdf", x, Bxdf::pdf(m, x.wo, x.wi));
+    t.sample("sample", x, Bxdf::sample(m, x.wo, x.u, x.uc));
+    let at = m.prepare(x.wo);
+    let f = m.eval_prepared(&at, x.wi);
+    t.value("eval_prepared", x, f);
+    let p = m.pdf_prepared(&at, x.wi);
+    t.density("pdf_prepared", x, p);
+    let (f2, p2) = m.eval_pdf_prepared(&at, x.wi);
+    t.value("eval_pdf_prepared", x, f2);
+    t.density("eval_pdf_prepared", x, p2);
+    if !same_bits(f, f2) || p.to_bits() != p2.to_bits() {
+        t.fail(
+            Kind::Split,
+            "eval_pdf_prepared",
+            x,
+            &format_args!(
+                "({f2:?}, {p2:?}) against ({f:?}, {p:?}) from eval_prepared, pdf_prepared"
+            ),
+        );
+    }
+    t.sample("sample_prepared", x, m.sample_prepared(&at, x.u, x.uc));
+}
+
+thread_local! {
+    /// The message of the last panic on this thread.
+    static PANIC: RefCell<String> = const { RefCell::new(String::new()) };
+}
+
+/// Runs `inputs` through `m`; a batch that panics is replayed input by input, so that the
+/// panicking inputs are counted and shown and the others still checked.
+fn check_batch<M: Prepare>(m: &M, inputs: &[Input], t: &mut Tally) {
+    let mut batch = Tally::default();
+    let ok = catch_unwind(AssertUnwindSafe(|| {
+        for x in inputs {
+            check_input(m, x, &mut batch);
+        }
+    }));
+    if ok.is_ok() {
+        t.add(batch);
+        return;
+    }
+    for x in inputs {
+        let mut one = Tally::default();
+        if catch_unwind(AssertUnwindSafe(|| check_input(m, x, &mut one))).is_ok() {
+            t.add(one);
+        } else {
+            t.inputs += 1;
+            let message = PANIC.with(|p| p.borrow().clone());
+            t.fail(Kind::Panic, "one of the calls", x, &message);
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// Configurations
+// ---------------------------------------------------------------------------------------
+
+/// The work of one configuration: the corner grid and `n` random inputs.
+type Run = Box<dyn Fn(usize, u64) -> Tally + Send + Sync>;
+
+/// One model with one set of parameters.
+struct Config {
+    /// The table's row.
+    model: String,
+    /// What distinguishes it from the row's other configurations.
+    params: String,
+    run: Run,
+}
+
+/// The configurations being built.
+#[derive(Default)]
+struct Configs(Vec<Config>);
+
+impl Configs {
+    /// Adds the model `m` to the table's row `model`; `eta`, the index of a model with a
+    /// dielectric interface, makes the inputs' refraction pairs.
+    fn push<M>(&mut self, model: &str, params: String, eta: Option<Eta>, m: M)
+    where
+        M: Prepare + Send + Sync + 'static,
+    {
+        let run: Run = Box::new(move |n, stream| {
+            let mut rng = Pcg32::new(SEED, stream);
+            let mut t = Tally::default();
+            check_batch(&m, &corner_inputs(eta, &mut rng), &mut t);
+            let mut done = 0;
+            let mut inputs = Vec::with_capacity(BATCH);
+            while done < n {
+                inputs.clear();
+                let k = BATCH.min(n - done);
+                inputs.extend((0..k).map(|_| random_input(eta, &mut rng)));
+                check_batch(&m, &inputs, &mut t);
+                done += k;
+            }
+            t
+        });
+        self.0.push(Config {
+            model: model.to_owned(),
+            params,
+            run,
+        });
+    }
+}
+
+fn alpha(a: f32) -> Alpha {
+    Alpha::new(a).expect("a valid width")
+}
+
+fn eta(e: f32) -> Eta {
+    Eta::new(e).expect("a valid index")
+}
+
+/// The widths: both ends of the range, a middle one, and anisotropic both ways.
+const ALPHAS: [(f32, f32); 5] = [
+    (1e-4, 1e-4),
+    (10.0, 10.0),
+    (0.3, 0.3),
+    (1e-4, 10.0),
+    (10.0, 1e-4),
+];
+
+/// The relative indices: 1 and just off it, the range's ends, glass from both sides.
+const ETAS: [f32; 7] = [1.0, 1.0 + 1e-4, 1.0 - 1e-4, 1e-3, 1e3, 1.5, 1.0 / 1.5];
+
+const MASKINGS: [Masking; 3] = [
+    Masking::HeightCorrelated,
+    Masking::Separable,
+    Masking::VCavity,
+];
+
+const MODES: [TransportMode; 2] = [TransportMode::Radiance, TransportMode::Importance];
+
+/// Conductors with `κ` up to 50 and `η` from 1e-3 to 1e3.
+fn extreme_conductor() -> Conductor<Vec3> {
+    Conductor {
+        ior: ComplexIor::new(Vec3::new(1e-3, 1.0, 1e3), Vec3::new(50.0, 0.0, 50.0))
+            .expect("a valid complex index"),
+    }
+}
+
+/// A microfacet model with distribution `d` under every Fresnel term the crate has, `f32` and
+/// RGB.
+fn push_fresnels<D>(c: &mut Configs, row: &str, what: &str, d: D, masking: Masking)
+where
+    D: NormalDistribution + Copy + Send + Sync + 'static,
+{
+    fn one<D, F>(c: &mut Configs, row: &str, what: String, d: D, masking: Masking, f: F)
+    where
+        D: NormalDistribution + Copy + Send + Sync + 'static,
+        F: Fresnel + Send + Sync + 'static,
+    {
+        c.push(row, what, None, Microfacet::new(d, masking, f));
+    }
+    let gold = lobe::metals::GOLD.rgb();
+    let p = |f: &str| format!("{what}, {masking:?}, {f}");
+    one(c, row, p("gold RGB"), d, masking, Conductor { ior: gold });
+    one(
+        c,
+        row,
+        p("η (1e-3, 1, 1e3) κ (50, 0, 50) RGB"),
+        d,
+        masking,
+        extreme_conductor(),
+    );
+    let k50 = ComplexIor::new(0.2f32, 50.0).expect("a valid complex index");
+    one(
+        c,
+        row,
+        p("η 0.2 κ 50 f32"),
+        d,
+        masking,
+        Conductor { ior: k50 },
+    );
+    one(
+        c,
+        row,
+        p("Schlick RGB"),
+        d,
+        masking,
+        Schlick::new(Vec3::new(1.0, 0.5, 0.0)).unwrap(),
+    );
+    one(
+        c,
+        row,
+        p("Schlick 0.04 f32"),
+        d,
+        masking,
+        Schlick::new(0.04f32).unwrap(),
+    );
+    for e in [1.0 + 1e-4, 1e-3, 1e3] {
+        let f = Dielectric { eta: eta(e) };
+        one(c, row, p(&format!("dielectric η {e:e}")), d, masking, f);
+    }
+    one(c, row, p("no Fresnel"), d, masking, NoFresnel::<f32>::new());
+}
+
+/// A microfacet model with distribution `d` and every masking term, with the gold conductor
+/// (RGB) and the extreme one; every Fresnel term under height-correlated masking.
+fn push_microfacet<D>(c: &mut Configs, row: &str, what: &str, d: D)
+where
+    D: NormalDistribution + Copy + Send + Sync + 'static,
+{
+    push_fresnels(c, row, what, d, Masking::HeightCorrelated);
+    for masking in [Masking::Separable, Masking::VCavity] {
+        let gold = Conductor {
+            ior: lobe::metals::GOLD.rgb(),
+        };
+        let p = |f: &str| format!("{what}, {masking:?}, {f}");
+        c.push(row, p("gold RGB"), None, Microfacet::new(d, masking, gold));
+        c.push(
+            row,
+            p("η (1e-3, 1, 1e3) κ (50, 0, 50) RGB"),
+            None,
+            Microfacet::new(d, masking, extreme_conductor()),
+        );
+    }
+}
+
+/// A rough dielectric with distribution `d`, every index, mode and masking term.
+fn push_rough_dielectric<D>(c: &mut Configs, row: &str, what: &str, d: D)
+where
+    D: NormalDistribution + Copy + Send + Sync + 'static,
+{
+    for e in ETAS {
+        for mode in MODES {
+            for masking in MASKINGS {
+                c.push(
+                    row,
+                    format!("{what}, η {e:e}, {mode:?}, {masking:?}"),
+                    Some(eta(e)),
+                    RoughDielectric::new(d, eta(e))
+                        .with_masking(masking)
+                        .with_mode(mode),
+                );
+            }
+        }
+    }
+}
+
+/// A plastic with distribution `d` under every index, `f32` and RGB.
+fn push_plastic<D>(c: &mut Configs, row: &str, what: &str, d: D)
+where
+    D: NormalDistribution + Copy + Send + Sync + 'static,
+{
+    for e in ETAS {
+        let p = |r: &str| format!("{what}, η {e:e}, ρ {r}");
+        let m = Plastic::new(Vec3::new(1.0, 0.5, 0.0), d, eta(e)).expect("a valid plastic");
+        c.push(row, p("(1, 0.5, 0) RGB"), Some(eta(e)), m);
+        let m = Plastic::new(1.0f32, d, eta(e)).expect("a valid plastic");
+        c.push(row, p("1 f32"), Some(eta(e)), m);
+    }
+}
+
+fn configs() -> Vec<Config> {
+    let mut c = Configs::default();
+    let rgb = Vec3::new(1.0, 0.5, 0.0);
+
+    // Diffuse models: reflectance at its ends, roughness at its ends, f32 and RGB.
+    for r in [0.0f32, 1.0] {
+        c.push(
+            "Lambert",
+            format!("ρ {r} f32"),
+            None,
+            Lambert::new(r).unwrap(),
+        );
+    }
+    c.push(
+        "Lambert",
+        "ρ (1, 0.5, 0) RGB".into(),
+        None,
+        Lambert::new(rgb).unwrap(),
+    );
+    for sigma in [0.0, 1e-4, OrenNayar::<f32>::SIGMA_MAX] {
+        let p = |s: &str| format!("σ {sigma}, ρ {s}");
+        c.push(
+            "OrenNayar",
+            p("1 f32"),
+            None,
+            OrenNayar::new(1.0f32, sigma).unwrap(),
+        );
+        c.push(
+            "OrenNayar",
+            p("(1, 0.5, 0) RGB"),
+            None,
+            OrenNayar::new(rgb, sigma).unwrap(),
+        );
+    }
+    for r in [0.0, 1e-4, 1.0] {
+        let fitted = EnergyPreservingOrenNayar::new(rgb, r).unwrap();
+        let row = "EnergyPreservingOrenNayar";
+        c.push(row, format!("r {r}, fitted, RGB"), None, fitted);
+        c.push(
+            row,
+            format!("r {r}, exact, RGB"),
+            None,
+            fitted.with_exact_albedo(),
+        );
+        let mono = EnergyPreservingOrenNayar::new(1.0f32, r).unwrap();
+        c.push(row, format!("r {r}, fitted, f32"), None, mono);
+        c.push(
+            row,
+            format!("r {r}, exact, f32"),
+            None,
+            mono.with_exact_albedo(),
+        );
+    }
+    for r in [0.0, 1.0] {
+        let rough = Roughness::new(r).unwrap();
+        let p = |s: &str| format!("roughness {r}, ρ {s}");
+        c.push(
+            "DisneyDiffuse",
+            p("1 f32"),
+            None,
+            DisneyDiffuse::new(1.0f32, rough).unwrap(),
+        );
+        c.push(
+            "DisneyDiffuse",
+            p("(1, 0.5, 0) RGB"),
+            None,
+            DisneyDiffuse::new(rgb, rough).unwrap(),
+        );
+    }
+
+    // Phong and Blinn-Phong: exponents at their ends, each lobe alone and mixed.
+    let weights: [(&str, f32, f32); 3] = [
+        ("kd 0, ks 1", 0.0, 1.0),
+        ("kd 1, ks 0", 1.0, 0.0),
+        ("kd 0.3, ks 0.7", 0.3, 0.7),
+    ];
+    for p in [0.0, 1e-4, 1.0, 1e6] {
+        for (w, kd, ks) in weights {
+            let name = |s: &str| format!("p {p:e}, {w}, {s}");
+            c.push("Phong", name("f32"), None, Phong::new(kd, ks, p).unwrap());
+            let m = Phong::new(Vec3::new(kd, kd, 0.0), Vec3::new(ks, 0.0, ks), p).unwrap();
+            c.push("Phong", name("RGB"), None, m);
+            for (row, form) in [
+                ("BlinnPhong (modified)", BlinnPhongForm::Modified),
+                ("BlinnPhong (normalized)", BlinnPhongForm::Normalized),
+            ] {
+                c.push(
+                    row,
+                    name("f32"),
+                    None,
+                    BlinnPhong::new(kd, ks, p, form).unwrap(),
+                );
+                let m = BlinnPhong::new(Vec3::new(kd, kd, 0.0), Vec3::new(ks, 0.0, ks), p, form)
+                    .unwrap();
+                c.push(row, name("RGB"), None, m);
+            }
+        }
+    }
+
+    // Microfacet conductors (and every other Fresnel term): every distribution, width,
+    // masking term.
+    for (ax, ay) in ALPHAS {
+        let w = format!("α ({ax:e}, {ay:e})");
+        let ggx = Ggx::new(alpha(ax), alpha(ay));
+        push_microfacet(&mut c, "Microfacet<Ggx>", &format!("{w}, bounded"), ggx);
+        let unbounded = ggx.with_bounded_reflection(false);
+        push_microfacet(
+            &mut c,
+            "Microfacet<Ggx>",
+            &format!("{w}, unbounded"),
+            unbounded,
+        );
+        let beckmann = Beckmann::new(alpha(ax), alpha(ay));
+        push_microfacet(
+            &mut c,
+            "Microfacet<Beckmann>",
+            &format!("{w}, exact Λ"),
+            beckmann,
+        );
+        let walter = beckmann.with_masking(BeckmannMasking::WalterRational);
+        push_microfacet(
+            &mut c,
+            "Microfacet<Beckmann>",
+            &format!("{w}, Walter G1"),
+            walter,
+        );
+    }
+    for a in [1e-4, 0.3, 10.0] {
+        for gamma in [0.01, 1.0, 2.0, 10.0] {
+            let gtr = Gtr::new(alpha(a), gamma).unwrap();
+            push_microfacet(
+                &mut c,
+                "Microfacet<Gtr>",
+                &format!("α {a:e}, γ {gamma}"),
+                gtr,
+            );
+        }
+    }
+    for a in [1e-4, 0.3, 1.0] {
+        let bp = BlinnPhongNdf::new(alpha(a)).unwrap();
+        let row = "Microfacet<BlinnPhongNdf>";
+        push_microfacet(&mut c, row, &format!("α {a:e}, Beckmann Λ"), bp);
+        push_microfacet(
+            &mut c,
+            row,
+            &format!("α {a:e}, exact Smith"),
+            bp.with_exact_smith(),
+        );
+    }
+
+    // Rough dielectrics: every distribution, width, index, mode and masking term.
+    for (ax, ay) in ALPHAS {
+        let w = format!("α ({ax:e}, {ay:e})");
+        let ggx = Ggx::new(alpha(ax), alpha(ay));
+        push_rough_dielectric(&mut c, "RoughDielectric<Ggx>", &w, ggx);
+        let beckmann = Beckmann::new(alpha(ax), alpha(ay));
+        push_rough_dielectric(&mut c, "RoughDielectric<Beckmann>", &w, beckmann);
+    }
+    for (a, gamma) in [
+        (1e-4, 0.01),
+        (1e-4, 10.0),
+        (10.0, 0.01),
+        (10.0, 10.0),
+        (0.3, 2.0),
+    ] {
+        let gtr = Gtr::new(alpha(a), gamma).unwrap();
+        push_rough_dielectric(
+            &mut c,
+            "RoughDielectric<Gtr>",
+            &format!("α {a:e}, γ {gamma}"),
+            gtr,
+        );
+    }
+    for a in [1e-4, 1.0] {
+        let bp = BlinnPhongNdf::new(alpha(a)).unwrap().with_exact_smith();
+        let row = "RoughDielectric<BlinnPhongNdf>";
+        push_rough_dielectric(&mut c, row, &format!("α {a:e}, exact Smith"), bp);
+    }
+
+    // Delta models.
+    c.push(
+        "Mirror",
+        "gold RGB".into(),
+        None,
+        Mirror::new(Conductor {
+            ior: lobe::metals::GOLD.rgb(),
+        }),
+    );
+    c.push(
+        "Mirror",
+        "η (1e-3, 1, 1e3) κ (50, 0, 50) RGB".into(),
+        None,
+        Mirror::new(extreme_conductor()),
+    );
+    c.push(
+        "Mirror",
+        "Schlick 1 f32".into(),
+        None,
+        Mirror::new(Schlick::new(1.0f32).unwrap()),
+    );
+    c.push(
+        "Mirror",
+        "no Fresnel".into(),
+        None,
+        Mirror::new(NoFresnel::<Vec3>::new()),
+    );
+    for e in ETAS {
+        c.push(
+            "Mirror",
+            format!("dielectric η {e:e}"),
+            None,
+            Mirror::new(Dielectric { eta: eta(e) }),
+        );
+        for mode in MODES {
+            let m = SmoothDielectric::new(eta(e)).with_mode(mode);
+            c.push(
+                "SmoothDielectric",
+                format!("η {e:e}, {mode:?}"),
+                Some(eta(e)),
+                m,
+            );
+        }
+        c.push(
+            "ThinDielectric",
+            format!("η {e:e}"),
+            Some(eta(e)),
+            ThinDielectric::new(eta(e)),
+        );
+        for r in [0.0f32, 1.0] {
+            c.push(
+                "Glazed",
+                format!("η {e:e}, ρ {r} f32"),
+                Some(eta(e)),
+                Glazed::new(r, eta(e)).unwrap(),
+            );
+        }
+        c.push(
+            "Glazed",
+            format!("η {e:e}, ρ (1, 0.5, 0) RGB"),
+            Some(eta(e)),
+            Glazed::new(rgb, eta(e)).unwrap(),
+        );
+    }
+
+    // Plastic: every distribution at the ends of its width.
+    for (ax, ay) in [(1e-4, 1e-4), (10.0, 10.0), (1e-4, 10.0)] {
+        let w = format!("α ({ax:e}, {ay:e})");
+        push_plastic(&mut c, "Plastic<Ggx>", &w, Ggx::new(alpha(ax), alpha(ay)));
+        push_plastic(
+            &mut c,
+            "Plastic<Beckmann>",
+            &w,
+            Beckmann::new(alpha(ax), alpha(ay)),
+        );
+    }
+    for (a, gamma) in [(1e-4, 10.0), (10.0, 0.01)] {
+        push_plastic(
+            &mut c,
+            "Plastic<Gtr>",
+            &format!("α {a:e}, γ {gamma}"),
+            Gtr::new(alpha(a), gamma).unwrap(),
+        );
+    }
+    for a in [1e-4, 1.0] {
+        push_plastic(
+            &mut c,
+            "Plastic<BlinnPhongNdf>",
+            &format!("α {a:e}"),
+            BlinnPhongNdf::new(alpha(a)).unwrap(),
+        );
+    }
+    c.0
+}
+
+// ---------------------------------------------------------------------------------------
+// Main
+// ---------------------------------------------------------------------------------------
+
+fn main() {
+    let n: usize = match std::env::args().nth(1) {
+        None => 100_000,
+        Some(a) => a.parse().unwrap_or_else(|_| {
+            eprintln!("usage: fuzz [N]   (N: random inputs per configuration, default 100000)");
+            std::process::exit(2)
+        }),
+    };
+    // Panics are expected and counted: keep their messages for the report, not stderr.
+    std::panic::set_hook(Box::new(|info| {
+        // "panicked at file:line:column:\nmessage"
+        let message = info.to_string().replace('\n', " ");
+        PANIC.with(|p| *p.borrow_mut() = message);
+    }));
+
+    let start = Instant::now();
+    let configs = configs();
+    let built = start.elapsed();
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let next = AtomicUsize::new(0);
+    let results: Vec<Mutex<Option<Tally>>> = configs.iter().map(|_| Mutex::new(None)).collect();
+    std::thread::scope(|s| {
+        for _ in 0..threads {
+            s.spawn(|| {
+                loop {
+                    let i = next.fetch_add(1, Ordering::Relaxed);
+                    let Some(config) = configs.get(i) else { break };
+                    let tally = (config.run)(n, i as u64);
+                    *results[i].lock().unwrap() = Some(tally);
+                }
+            });
+        }
+    });
+
+    // Rows in the order of first appearance, with their configurations' tallies summed; the
+    // failing configurations; and failing inputs from as many configurations as possible.
+    let mut rows: Vec<(String, usize, Tally)> = Vec::new();
+    let mut failing: Vec<(String, String, u64, u64)> = Vec::new();
+    let mut shown: Vec<(String, String, Failure)> = Vec::new();
+    let tallies: Vec<Tally> = results
+        .into_iter()
+        .map(|r| r.into_inner().unwrap().expect("every configuration ran"))
+        .collect();
+    for round in 0..SHOWN {
+        for (config, tally) in configs.iter().zip(&tallies) {
+            for kind in KINDS {
+                let kept = shown
+                    .iter()
+                    .filter(|(m, _, g)| *m == config.model && g.kind == kind)
+                    .count();
+                let nth = tally.failures.iter().filter(|f| f.kind == kind).nth(round);
+                if let (true, Some(f)) = (kept < SHOWN, nth) {
+                    shown.push((config.model.clone(), config.params.clone(), f.clone()));
+                }
+            }
+        }
+    }
+    for (config, tally) in configs.iter().zip(tallies) {
+        if tally.total() > 0 {
+            failing.push((
+                config.model.clone(),
+                config.params.clone(),
+                tally.total(),
+                tally.at_one,
+            ));
+        }
+        match rows.iter_mut().find(|(m, _, _)| *m == config.model) {
+            Some((_, k, t)) => {
+                *k += 1;
+                t.add(tally);
+            }
+            None => rows.push((config.model.clone(), 1, tally)),
+        }
+    }
+
+    let mut out = String::new();
+    let corners = corner_inputs(None, &mut Pcg32::new(0, 0)).len();
+    writeln!(
+        out,
+        "lobe fuzz: {} configurations, {corners} corner + {n} random inputs each, 8 calls per input",
+        configs.len()
+    )
+    .unwrap();
+    writeln!(out).unwrap();
+    write!(out, "| model | configs | inputs |").unwrap();
+    for k in KINDS {
+        write!(out, " {} |", k.header()).unwrap();
+    }
+    writeln!(out, " of which u = 1 |").unwrap();
+    writeln!(out, "|---|---:|---:|{}", "---:|".repeat(KINDS.len() + 1)).unwrap();
+    let mut total = Tally::default();
+    for (model, k, t) in &rows {
+        write!(out, "| {model} | {k} | {} |", t.inputs).unwrap();
+        for c in t.counts {
+            write!(out, " {c} |").unwrap();
+        }
+        writeln!(out, " {} |", t.at_one).unwrap();
+        total.inputs += t.inputs;
+        total.at_one += t.at_one;
+        for (a, b) in total.counts.iter_mut().zip(t.counts) {
+            *a += b;
+        }
+    }
+    write!(out, "| **all** | {} | {} |", configs.len(), total.inputs).unwrap();
+    for c in total.counts {
+        write!(out, " {c} |").unwrap();
+    }
+    writeln!(out, " {} |", total.at_one).unwrap();
+    print!("{out}");
+
+    if !failing.is_empty() {
+        println!("\nFailing configurations (bad results; of which with u or uc = 1):");
+        for (model, params, bad, at_one) in &failing {
+            println!("  {model} ({params}): {bad}; {at_one}");
+        }
+    }
+
+    if !shown.is_empty() {
+        println!("\nFirst failing inputs (at most {SHOWN} per model and kind):");
+        for (model, params, f) in &shown {
+            let Input { wo, wi, u, uc } = f.input;
+            println!(
+                "  [{}] {model} ({params}): {}(wo = {wo:?}, wi = {wi:?}, u = {u:?}, uc = {uc:?}) = {}",
+                f.kind.header(),
+                f.call,
+                f.value
+            );
+        }
+    }
+    println!(
+        "\n{threads} threads, {:.1} s ({:.1} s building the models)",
+        start.elapsed().as_secs_f64(),
+        built.as_secs_f64()
+    );
+    if total.total() > 0 {
+        println!("FAIL: {} bad results", total.total());
+        std::process::exit(1);
+    }
+    println!("OK: no bad results");
+}
