@@ -191,3 +191,33 @@ fn every_model_is_total_at_the_corners() {
     }
     assert_eq!(checked, MODELS as usize * 3 * 5 * 3 * 8 * 8 * 3);
 }
+
+/// The inputs `examples/fuzz.rs` found where a narrow lobe's sample density underflowed to a
+/// subnormal (2e-40), so that the weight `f |cos θi| / pdf` overflowed to infinity: now the
+/// sample is refused, or its weight is finite.
+#[test]
+fn samples_with_subnormal_densities_are_refused() {
+    let tiny = Alpha::new(1e-4).unwrap();
+    let narrow_bp = RoughDielectric::new(
+        BlinnPhongNdf::new(tiny).unwrap().with_exact_smith(),
+        Eta::new(1.0001).unwrap(),
+    );
+    let narrow_gtr = RoughDielectric::new(Gtr::new(tiny, 10.0).unwrap(), Eta::new(1.5).unwrap());
+    let cases: [(&dyn Bxdf<Spectrum = f32>, Vec3, Vec2, f32); 2] = [
+        (&narrow_bp, Vec3::new(-0.0, 0.0, 1.0), Vec2::ZERO, 0.0),
+        (
+            &narrow_gtr,
+            Vec3::new(0.529_732_05, 0.0, -0.848_165_04),
+            Vec2::ZERO,
+            0.999_999_94,
+        ),
+    ];
+    for (m, wo, u, uc) in cases {
+        if let Some(s) = m.sample(wo, u, uc) {
+            assert!(
+                s.pdf >= f32::MIN_POSITIVE && s.weight().is_finite(),
+                "{s:?}"
+            );
+        }
+    }
+}

@@ -422,3 +422,94 @@ fn coated_models_do_not_allocate() {
         }
     }
 }
+
+/// The batched calls (`lobe::batch`) of the three models the issue names, RGB and mono,
+/// including their run-time dispatch to the widest SIMD the CPU has: no allocation either.
+#[test]
+fn batched_calls_do_not_allocate() {
+    use lobe::batch::{Batch, SampleOut, Vec2s, Vec3s};
+    let i = inputs();
+    let col = |v: &[Vec3], c: usize| v.iter().map(|w| w[c]).collect::<Vec<f32>>();
+    let (wox, woy, woz) = (col(&i.wo, 0), col(&i.wo, 1), col(&i.wo, 2));
+    let (wix, wiy, wiz) = (col(&i.wi, 0), col(&i.wi, 1), col(&i.wi, 2));
+    let ux: Vec<f32> = i.u.iter().map(|u| u.x).collect();
+    let uy: Vec<f32> = i.u.iter().map(|u| u.y).collect();
+    let wo = Vec3s {
+        x: &wox,
+        y: &woy,
+        z: &woz,
+    };
+    let wi = Vec3s {
+        x: &wix,
+        y: &wiy,
+        z: &wiz,
+    };
+    let u = Vec2s { x: &ux, y: &uy };
+    let mut out: Vec<Vec<f32>> = vec![vec![0.0; N]; 7];
+    let conductor = Microfacet::new(
+        Ggx::isotropic(alpha(0.3)),
+        Masking::HeightCorrelated,
+        Conductor { ior: gold() },
+    );
+    let schlick = Microfacet::new(
+        Ggx::isotropic(alpha(0.3)),
+        Masking::VCavity,
+        Schlick::new(Vec3::new(0.9, 0.6, 0.3)).unwrap(),
+    );
+    let lambert = Lambert::new(Vec3::new(0.8, 0.5, 0.2)).unwrap();
+    let glass = RoughDielectric::new(Ggx::isotropic(alpha(0.3)), eta(1.5));
+    let ((), calls) = count_calls(|| {
+        let [a, b, c, d, e, f, g] = &mut out[..] else {
+            unreachable!()
+        };
+        conductor.eval_batch(wo, wi, rgb(a, b, c)).unwrap();
+        conductor.pdf_batch(wo, wi, d).unwrap();
+        conductor
+            .sample_batch(
+                wo,
+                u,
+                &i.uc,
+                SampleOut {
+                    wi: rgb(a, b, c),
+                    f: rgb(d, e, f),
+                    pdf: g,
+                },
+            )
+            .unwrap();
+        schlick.eval_batch(wo, wi, rgb(a, b, c)).unwrap();
+        lambert.eval_batch(wo, wi, rgb(a, b, c)).unwrap();
+        lambert
+            .sample_batch(
+                wo,
+                u,
+                &i.uc,
+                SampleOut {
+                    wi: rgb(a, b, c),
+                    f: rgb(d, e, f),
+                    pdf: g,
+                },
+            )
+            .unwrap();
+        glass.eval_batch(wo, wi, &mut *a).unwrap();
+        glass.pdf_batch(wo, wi, &mut *b).unwrap();
+        glass
+            .sample_batch(
+                wo,
+                u,
+                &i.uc,
+                SampleOut {
+                    wi: rgb(c, d, e),
+                    f: &mut *f,
+                    pdf: g,
+                },
+            )
+            .unwrap();
+    });
+    black_box(&out);
+    assert_eq!(calls, 0, "the batched calls allocated {calls} times");
+}
+
+/// Three slices as one RGB output.
+fn rgb<'a>(x: &'a mut [f32], y: &'a mut [f32], z: &'a mut [f32]) -> lobe::batch::Vec3sMut<'a> {
+    lobe::batch::Vec3sMut { x, y, z }
+}

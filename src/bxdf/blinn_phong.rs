@@ -3,7 +3,7 @@
 use super::diffuse_glossy::{
     check_exponent, check_sum, cos_power_norm, diffuse_probability, weighted_lobes,
 };
-use super::{BxdfSample, Lobes, Prepare, both_above};
+use super::{BxdfSample, Lobes, Prepare, both_above, usable_pdf};
 use crate::frame::reflect;
 use crate::math::{cos_pow, exp, sqrt};
 use crate::param::ParamError;
@@ -268,7 +268,7 @@ impl<S: Spectrum> Prepare for BlinnPhong<S> {
         // One evaluation of the lobe serves both the value and the density.
         let (cos_pow, len) = self.lobe(wo, wi);
         let pdf = self.density(wi.z, cos_pow, len);
-        if !(pdf > 0.0) {
+        if !usable_pdf(pdf) {
             return None;
         }
         Some(BxdfSample {

@@ -1,6 +1,6 @@
 //! The handouts' glazed material: a diffuse base under a smooth dielectric coat.
 
-use super::{At, BxdfSample, Lobes, Prepare, both_above, delta_scale};
+use super::{At, BxdfSample, Lobes, Prepare, both_above, delta_scale, usable_pdf};
 use crate::fresnel::dielectric;
 use crate::param::{Eta, ParamError, unit_interval};
 use crate::sampling::{cosine_hemisphere, cosine_hemisphere_pdf};
@@ -128,7 +128,7 @@ impl<S: Spectrum> Prepare for Glazed<S> {
         }
         let wi = cosine_hemisphere(u);
         let pdf = (1.0 - p_mirror) * cosine_hemisphere_pdf(wi.z);
-        if !(pdf > 0.0) {
+        if !usable_pdf(pdf) {
             return None;
         }
         let t = (1.0 - f) * (1.0 - dielectric(wi.z, self.eta));

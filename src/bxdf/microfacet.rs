@@ -1,7 +1,7 @@
 //! The Cook-Torrance microfacet reflection model, generic over distribution, masking and
 //! Fresnel term.
 
-use super::{At, BxdfSample, Lobes, Prepare, both_above};
+use super::{At, BxdfSample, Lobes, Prepare, both_above, usable_pdf};
 use crate::frame::reflect;
 use crate::fresnel::{self, Fresnel};
 use crate::microfacet::{Masking, NormalDistribution, View};
@@ -176,7 +176,7 @@ impl<D: NormalDistribution, F: Fresnel> Microfacet<D, F> {
         let (s, s2) = Self::half_above(at, wi)?;
         let d = self.distribution.d_unnormalized(s, s2);
         let pdf = self.density(at, s, d);
-        if !(pdf > 0.0 && pdf.is_finite()) {
+        if !usable_pdf(pdf) {
             return None;
         }
         Some(BxdfSample {

@@ -449,7 +449,7 @@ pub(crate) fn sample_cosine<S>(
     }
     let wi = crate::sampling::cosine_hemisphere(u);
     let pdf = crate::sampling::cosine_hemisphere_pdf(wi.z);
-    if !(pdf > 0.0) {
+    if !usable_pdf(pdf) {
         return None;
     }
     Some(BxdfSample {
@@ -479,6 +479,15 @@ pub(crate) fn pdf_cosine(wo: Vec3, wi: Vec3) -> f32 {
 pub(crate) fn delta_scale(wi: Vec3) -> Option<f32> {
     let c = wi.z.abs();
     (c >= f32::MIN_POSITIVE).then(|| 1.0 / c)
+}
+
+/// Whether a sample's density can be returned: positive, finite, and not subnormal, so that
+/// the weight `f |cos θi| / pdf` cannot overflow where a narrow lobe's density underflows
+/// (found by `examples/fuzz.rs`: a pdf of 2e-40 gave an infinite weight).
+#[inline(always)]
+#[must_use]
+pub(crate) fn usable_pdf(pdf: f32) -> bool {
+    (f32::MIN_POSITIVE..f32::INFINITY).contains(&pdf)
 }
 
 /// `wo` and `wi` both strictly above the surface: the support of a one-sided BRDF.

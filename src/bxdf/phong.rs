@@ -3,7 +3,7 @@
 use super::diffuse_glossy::{
     check_exponent, check_sum, cos_power_norm, diffuse_probability, weighted_lobes,
 };
-use super::{BxdfSample, Lobes, Prepare, both_above};
+use super::{BxdfSample, Lobes, Prepare, both_above, usable_pdf};
 use crate::frame::Frame;
 use crate::math::{exp, ln_1p, powf, sqrt};
 use crate::param::ParamError;
@@ -225,7 +225,7 @@ impl<S: Spectrum> Prepare for Phong<S> {
         // One evaluation of the lobe serves both the value and the density.
         let lobe = self.lobe(wo, wi);
         let pdf = self.density(wi.z, lobe);
-        if !(pdf > 0.0) {
+        if !usable_pdf(pdf) {
             return None;
         }
         Some(BxdfSample {

@@ -1,7 +1,7 @@
 //! A diffuse base under a rough dielectric coat: the glazed material's rough variant.
 
 use super::glazed::cosine_weighted_average;
-use super::{At, Bxdf, BxdfSample, Lobes, Microfacet, Prepare, both_above};
+use super::{At, Bxdf, BxdfSample, Lobes, Microfacet, Prepare, both_above, usable_pdf};
 use crate::fresnel::Dielectric;
 use crate::microfacet::{Masking, NormalDistribution};
 use crate::param::{Eta, ParamError, unit_interval};
@@ -199,7 +199,7 @@ impl<D: NormalDistribution, S: Spectrum> Prepare for Plastic<D, S> {
             return None;
         }
         let pdf = st.p_coat * coat_pdf + (1.0 - st.p_coat) * cosine_hemisphere_pdf(wi.z);
-        if !(pdf > 0.0 && pdf.is_finite()) {
+        if !usable_pdf(pdf) {
             return None;
         }
         Some(BxdfSample {

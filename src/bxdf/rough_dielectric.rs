@@ -1,6 +1,6 @@
 //! Walter et al.'s rough dielectric: microfacet reflection and refraction.
 
-use super::{At, BxdfSample, Lobes, Prepare, TransportMode};
+use super::{At, BxdfSample, Lobes, Prepare, TransportMode, usable_pdf};
 use crate::frame::{reflect, refract};
 use crate::fresnel::{dielectric, dielectric_refracted};
 use crate::microfacet::{Masking, NormalDistribution, View};
@@ -253,7 +253,7 @@ impl<D: NormalDistribution> RoughDielectric<D> {
         // D and F(wo·h) once, for both the value and the density.
         let (d, f_wo) = (self.distribution.d(c.h), self.fresnel(wo, &c));
         let pdf = self.density(at, wi, &c, d, f_wo);
-        if !(pdf > 0.0 && pdf.is_finite()) {
+        if !usable_pdf(pdf) {
             return None;
         }
         let (lobe, eta) = if c.reflection {
