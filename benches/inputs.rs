@@ -22,7 +22,7 @@ pub struct Inputs {
 
 /// A direction on the upper hemisphere: uniform in solid angle, or (one time in twenty)
 /// within 1° of the horizon.
-fn direction(rng: &mut Pcg32) -> Vec3 {
+pub fn direction(rng: &mut Pcg32) -> Vec3 {
     let grazing = rng.next_f32() < 0.05;
     let z = if grazing {
         1f32.to_radians().sin() * rng.next_f32()

@@ -233,7 +233,8 @@ fn ratio_or_one(num: f32, den: f32) -> f32 {
 /// at normal incidence, the second keeps the grazing reflectance of an interface with `η ≈ 1`
 /// accurate). The larger of `a`, `b` comes from `√(½(a² + b² + |a² − b²|))` and the smaller
 /// from `η κ` divided by it, which avoids the cancellation of the half-sum/half-difference
-/// form. Writing every ratio as a sum of squares over a sum of squares keeps it in `[0, 1]`.
+/// form. Writing every ratio as a sum of squares over a sum of squares keeps it in `[0, 1]`;
+/// the two ratios share one division, so a channel costs two square roots and two divisions.
 #[inline(always)]
 fn conductor_channel(c: f32, sin2_i: f32, eta: f32, k: f32) -> f32 {
     // a² − b² = η² − κ² − sin²θi, in the form that rounds less (see above).
@@ -254,14 +255,22 @@ fn conductor_channel(c: f32, sin2_i: f32, eta: f32, k: f32) -> f32 {
     };
 
     let b2 = b * b;
-    let rs = ratio_or_one((c - a) * (c - a) + b2, (c + a) * (c + a) + b2);
+    let (ns, ds) = or_one((c - a) * (c - a) + b2, (c + a) * (c + a) + b2);
     let ac = a * c;
     let bc2 = b2 * c2;
-    let p_over_s = ratio_or_one(
+    let (np, dp) = or_one(
         (ac - sin2_i) * (ac - sin2_i) + bc2,
         (ac + sin2_i) * (ac + sin2_i) + bc2,
     );
-    0.5 * rs * (1.0 + p_over_s)
+    // ½ |r_s|² (1 + |r_p|²/|r_s|²) with the two ratios over one division.
+    0.5 * ns * (dp + np) / (ds * dp)
+}
+
+/// The ratio `num/den` as a pair, `(1, 1)` where `den` is 0 ([`ratio_or_one`]'s limit): a
+/// select, so that the ratios can share one division.
+#[inline(always)]
+fn or_one(num: f32, den: f32) -> (f32, f32) {
+    if den > 0.0 { (num, den) } else { (1.0, 1.0) }
 }
 
 /// The exact unpolarised Fresnel reflectance of a conductor with complex index `η + iκ`.

@@ -1,0 +1,137 @@
+//! The batched half of the Mitsuba 3 comparison (`benches/peers/vs_mitsuba.py` runs it):
+//!
+//! ```sh
+//! batch-timing write FILE N   # writes N (wo, wi, u, uc) lanes, f32 little-endian, one array per coordinate
+//! batch-timing time FILE      # times lobe's batched GGX gold conductor on them; prints ns per lane
+//! ```
+//!
+//! The model is Mitsuba's `roughconductor` with `distribution = ggx`, `alpha = 0.3`,
+//! `material = Au`, `sample_visible = true`: the GGX conductor with gold's complex index and
+//! plain visible-normal sampling (`with_bounded_reflection(false)`). The timing runs on one
+//! thread, five passes per kernel after a warm-up pass, and prints the median.
+
+#[path = "../inputs.rs"]
+#[allow(dead_code)]
+mod inputs;
+
+use lobe::batch::{Batch, SampleOut, Vec2s, Vec3s, Vec3sMut};
+use lobe::bxdf::Microfacet;
+use lobe::fresnel::Conductor;
+use lobe::microfacet::{Ggx, Masking};
+use lobe::verify::Pcg32;
+use lobe::{Alpha, ComplexIor, Vec3};
+use std::hint::black_box;
+use std::time::Instant;
+
+fn write(path: &str, n: usize) {
+    // The benchmarks' directions (5% grazing), n of them. File order: wo.x, wo.y, wo.z,
+    // wi.x, wi.y, wi.z, u.x, u.y, uc.
+    let mut rng = Pcg32::new(0x10be, 11);
+    let mut cols: Vec<Vec<f32>> = vec![Vec::with_capacity(n); 9];
+    for _ in 0..n {
+        let (wo, wi) = (inputs::direction(&mut rng), inputs::direction(&mut rng));
+        for (c, v) in [wo.x, wo.y, wo.z, wi.x, wi.y, wi.z].into_iter().enumerate() {
+            cols[c].push(v);
+        }
+        cols[6].push(rng.next_f32());
+        cols[7].push(rng.next_f32());
+        cols[8].push(rng.next_f32());
+    }
+    let bytes: Vec<u8> = cols
+        .iter()
+        .flatten()
+        .flat_map(|x| x.to_le_bytes())
+        .collect();
+    std::fs::write(path, bytes).expect("write the inputs");
+}
+
+fn read(path: &str) -> Vec<Vec<f32>> {
+    let bytes = std::fs::read(path).expect("read the inputs");
+    let floats: Vec<f32> = bytes
+        .chunks_exact(4)
+        .map(|b| f32::from_le_bytes([b[0], b[1], b[2], b[3]]))
+        .collect();
+    let n = floats.len() / 9;
+    floats.chunks_exact(n).map(<[f32]>::to_vec).collect()
+}
+
+/// The median of five timed passes of `f`, in ns per lane, after one untimed pass.
+fn time(n: usize, mut f: impl FnMut()) -> f64 {
+    f();
+    let mut t: Vec<f64> = (0..5)
+        .map(|_| {
+            let s = Instant::now();
+            f();
+            s.elapsed().as_nanos() as f64 / n as f64
+        })
+        .collect();
+    t.sort_by(f64::total_cmp);
+    t[2]
+}
+
+fn main() {
+    let args: Vec<String> = std::env::args().collect();
+    match args.get(1).map(String::as_str) {
+        Some("write") => write(&args[2], args[3].parse().expect("N")),
+        Some("time") => {
+            let c = read(&args[2]);
+            let n = c[0].len();
+            let gold = ComplexIor::new(
+                Vec3::new(0.143, 0.375, 1.442),
+                Vec3::new(3.983, 2.386, 1.603),
+            )
+            .unwrap();
+            let m = Microfacet::new(
+                Ggx::isotropic(Alpha::new(0.3).unwrap()).with_bounded_reflection(false),
+                Masking::HeightCorrelated,
+                Conductor { ior: gold },
+            );
+            let m = black_box(&m);
+            let wo = Vec3s {
+                x: &c[0],
+                y: &c[1],
+                z: &c[2],
+            };
+            let wi = Vec3s {
+                x: &c[3],
+                y: &c[4],
+                z: &c[5],
+            };
+            let u = Vec2s { x: &c[6], y: &c[7] };
+            let mut o: Vec<Vec<f32>> = vec![vec![0.0; n]; 7];
+            let [a, b, cc, d, e, f, g] = &mut o[..] else {
+                unreachable!()
+            };
+            let eval = time(n, || {
+                m.eval_batch(wo, wi, Vec3sMut { x: a, y: b, z: cc })
+                    .unwrap();
+            });
+            let pdf = time(n, || m.pdf_batch(wo, wi, d).unwrap());
+            let sample = time(n, || {
+                let out = SampleOut {
+                    wi: Vec3sMut { x: a, y: b, z: cc },
+                    f: Vec3sMut { x: d, y: e, z: f },
+                    pdf: g,
+                };
+                m.sample_batch(wo, u, &c[8], out).unwrap();
+            });
+            // A pass that reads the eval inputs and writes its outputs: the memory floor.
+            let copy = time(n, || {
+                for (out, (x, y)) in
+                    [&mut *a, &mut *b, &mut *cc]
+                        .into_iter()
+                        .zip([(0, 3), (1, 4), (2, 5)])
+                {
+                    for (o, (p, q)) in out.iter_mut().zip(c[x].iter().zip(&c[y])) {
+                        *o = p + q;
+                    }
+                }
+            });
+            black_box(&o);
+            println!(
+                "{{\"eval\": {eval}, \"pdf\": {pdf}, \"sample\": {sample}, \"copy\": {copy}}}"
+            );
+        }
+        _ => eprintln!("usage: batch-timing write FILE N | batch-timing time FILE"),
+    }
+}

@@ -1,0 +1,155 @@
+#!/usr/bin/env python3
+"""lobe's batched GGX conductor against Mitsuba 3's JIT, on the same directions, one core.
+
+    python3 benches/peers/vs_mitsuba.py [N]        # N lanes, default 2^20
+
+What it needs (CI does not set it up; the script says so and exits 2 without it):
+  * Python 3 with the `mitsuba` (3.x) and `numpy` packages from PyPI:
+        python3 -m pip install mitsuba numpy
+  * an LLVM shared library for Dr.Jit's `llvm_ad_rgb` variant, e.g. Debian's `libllvm19`:
+        apt-get install libllvm19        (Dr.Jit finds libLLVM.so.*; or set DRJIT_LIBLLVM_PATH)
+  * cargo, to build `batch-timing` (benches/peers/batch_timing.rs).
+
+The model on both sides: GGX, alpha 0.3, gold (lobe's RGB complex index; Mitsuba's `Au`
+spectral data converted to RGB by Mitsuba), visible-normal sampling without the bounded cap
+(Mitsuba's `sample_visible = true`). Mitsuba's `eval` includes the cosine factor and its
+`sample` returns the weight; lobe's `eval` is f and its `sample` returns f and pdf: each side
+does the work its API asks for.
+
+Timing: Dr.Jit on one thread (`dr.set_thread_count(1)`), each kernel compiled by a first
+call (not timed), then five timed launches; lobe's batched calls (no fast-math, no warm-up
+other than one untimed pass) in `batch-timing`, also five passes. The two sides alternate in
+rounds (lobe, Mitsuba, lobe, Mitsuba, ...) and the table gives medians over rounds with their
+spread, and the median of the per-round ratios.
+"""
+
+import json
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+ROUNDS = 5
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+
+
+def fail(msg):
+    print(f"vs_mitsuba.py: {msg}", file=sys.stderr)
+    sys.exit(2)
+
+
+try:
+    import numpy as np
+except ImportError:
+    fail("numpy is missing: python3 -m pip install numpy")
+try:
+    import drjit as dr
+    import mitsuba as mi
+except ImportError:
+    fail("Mitsuba 3 is missing: python3 -m pip install mitsuba")
+try:
+    mi.set_variant("llvm_ad_rgb")
+except Exception as e:  # noqa: BLE001 - any failure here means no LLVM backend
+    fail(
+        "Mitsuba's llvm_ad_rgb variant could not start (it needs an LLVM shared library, "
+        f"e.g. apt-get install libllvm19, or DRJIT_LIBLLVM_PATH): {e}"
+    )
+
+
+def build_lobe():
+    cmd = ["cargo", "build", "--release", "-q", "-p", "lobe-peers", "--bin", "batch-timing"]
+    r = subprocess.run(cmd, cwd=ROOT)
+    if r.returncode != 0:
+        fail("cargo build of batch-timing failed")
+    return os.path.join(ROOT, "target", "release", "batch-timing")
+
+
+def time_lobe(exe, path):
+    out = subprocess.run([exe, "time", path], capture_output=True, text=True, check=True)
+    return json.loads(out.stdout)
+
+
+def load(path):
+    a = np.fromfile(path, dtype="<f4")
+    return a.reshape(9, -1)
+
+
+def median_launch(fn, n):
+    """Compile with one call, then the median of five timed launches, ns per lane."""
+    dr.eval(fn())
+    dr.sync_thread()
+    ts = []
+    for _ in range(5):
+        t = time.perf_counter()
+        dr.eval(fn())
+        dr.sync_thread()
+        ts.append((time.perf_counter() - t) * 1e9 / n)
+    return statistics.median(ts)
+
+
+def time_mitsuba(c):
+    n = c.shape[1]
+    bsdf = mi.load_dict(
+        {
+            "type": "roughconductor",
+            "distribution": "ggx",
+            "alpha": 0.3,
+            "material": "Au",
+            "sample_visible": True,
+        }
+    )
+    # Mitsuba's si.wi is lobe's wo (toward the viewer); its `wo` argument is lobe's wi.
+    wo = mi.Vector3f(mi.Float(c[0]), mi.Float(c[1]), mi.Float(c[2]))
+    wi = mi.Vector3f(mi.Float(c[3]), mi.Float(c[4]), mi.Float(c[5]))
+    u = mi.Point2f(mi.Float(c[6]), mi.Float(c[7]))
+    uc = mi.Float(c[8])
+    dr.eval(wo, wi, u, uc)
+    si = dr.zeros(mi.SurfaceInteraction3f, n)
+    si.wi = wo
+    si.sh_frame = mi.Frame3f(mi.Vector3f(0, 0, 1))
+    ctx = mi.BSDFContext()
+
+    def sample():
+        bs, w = bsdf.sample(ctx, si, uc, u)
+        return bs.wo, bs.pdf, w
+
+    def copy():
+        return wo + wi
+
+    return {
+        "eval": median_launch(lambda: bsdf.eval(ctx, si, wi), n),
+        "pdf": median_launch(lambda: bsdf.pdf(ctx, si, wi), n),
+        "sample": median_launch(sample, n),
+        "copy": median_launch(copy, n),
+    }
+
+
+def main():
+    n = int(sys.argv[1]) if len(sys.argv) > 1 else 1 << 20
+    dr.set_thread_count(1)
+    exe = build_lobe()
+    with tempfile.TemporaryDirectory() as tmp:
+        path = os.path.join(tmp, "inputs.bin")
+        subprocess.run([exe, "write", path, str(n)], check=True)
+        c = load(path)
+        rounds = []
+        for _ in range(ROUNDS):
+            rounds.append((time_lobe(exe, path), time_mitsuba(c)))
+    print(f"\nGGX gold conductor, alpha 0.3, {n} lanes, one core, {ROUNDS} interleaved rounds")
+    print("ns per lane: median [min, max] over rounds; ratio = median of per-round lobe/Mitsuba\n")
+    print("| kernel | lobe batched | Mitsuba 3 (llvm_ad_rgb) | ratio |")
+    print("| --- | --- | --- | --- |")
+    for k in ["eval", "pdf", "sample", "copy"]:
+        lo = [r[0][k] for r in rounds]
+        mi_ = [r[1][k] for r in rounds]
+        ra = [a / b for a, b in zip(lo, mi_)]
+        fmt = lambda xs: f"{statistics.median(xs):.2f} [{min(xs):.2f}, {max(xs):.2f}]"  # noqa: E731
+        name = "memory pass (wo + wi)" if k == "copy" else k
+        print(f"| {name} | {fmt(lo)} | {fmt(mi_)} | {statistics.median(ra):.2f}× [{min(ra):.2f}, {max(ra):.2f}] |")
+
+
+if __name__ == "__main__":
+    main()
