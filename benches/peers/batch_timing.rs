@@ -27,7 +27,7 @@ fn write(path: &str, n: usize) {
     // The benchmarks' directions (5% grazing), n of them. File order: wo.x, wo.y, wo.z,
     // wi.x, wi.y, wi.z, u.x, u.y, uc.
     let mut rng = Pcg32::new(0x10be, 11);
-    let mut cols: Vec<Vec<f32>> = vec![Vec::with_capacity(n); 9];
+    let mut cols: Vec<Vec<f32>> = (0..9).map(|_| Vec::with_capacity(n)).collect();
     for _ in 0..n {
         let (wo, wi) = (inputs::direction(&mut rng), inputs::direction(&mut rng));
         for (c, v) in [wo.x, wo.y, wo.z, wi.x, wi.y, wi.z].into_iter().enumerate() {
