@@ -58,23 +58,30 @@ fn turn_fraction(y: f32, x: f32) -> f32 {
 #[inline(always)]
 #[must_use]
 pub fn square_to_disk_concentric(u: Vec2) -> Vec2 {
+    concentric(u).0
+}
+
+/// [`square_to_disk_concentric`] with the point's distance from the centre, `max(|a|, |b|)`,
+/// known exactly before the angle's sine and cosine are.
+#[inline(always)]
+fn concentric(u: Vec2) -> (Vec2, f32) {
     let a = 2.0 * u.x - 1.0;
     let b = 2.0 * u.y - 1.0;
+    if a == 0.0 && b == 0.0 {
+        return (Vec2::ZERO, 0.0);
+    }
     // A negative radius flips the point through the origin, which covers the left and
-    // lower quarters of the square with the same two formulas. Written with selects rather
-    // than branches: which sector a point falls in is as random as the point.
-    let wide = a.abs() > b.abs();
-    let (r, other) = if wide { (a, b) } else { (b, a) };
-    // The centre (r = 0) maps to the centre, at any angle.
-    let ratio = if r == 0.0 { 0.0 } else { other / r };
-    // φ = ψ = (π/4) b/a, or φ = π/2 − ψ with ψ = (π/4) a/b, whose sine and cosine swap.
-    let (sin_psi, cos_psi) = sin_cos_octant(FRAC_PI_4 * ratio);
-    let (s, c) = if wide {
-        (sin_psi, cos_psi)
+    // lower quarters of the square with the same two formulas. φ = (π/4) b/a, or
+    // φ = π/2 − (π/4) a/b, whose sine and cosine are those of (π/4) a/b swapped. (Branches
+    // rather than selects: the scalar sampler runs ahead on the predicted side, faster than
+    // waiting for the comparison; a batched loop turns them into selects anyway.)
+    if a.abs() > b.abs() {
+        let (s, c) = sin_cos_octant(FRAC_PI_4 * (b / a));
+        (Vec2::new(a * c, a * s), a.abs())
     } else {
-        (cos_psi, sin_psi)
-    };
-    Vec2::new(r * c, r * s)
+        let (s, c) = sin_cos_octant(FRAC_PI_4 * (a / b));
+        (Vec2::new(b * s, b * c), b.abs())
+    }
 }
 
 /// The inverse of [`square_to_disk_concentric`]: the point of the unit square that the
@@ -107,13 +114,14 @@ pub fn disk_to_square_concentric(p: Vec2) -> Vec2 {
 /// A direction on the upper hemisphere (`z ≥ 0`) distributed with density `cos θ / π`.
 ///
 /// Malley's method (PBR 4th ed., §A.5): a uniform point of the disk
-/// ([`square_to_disk_concentric`]) lifted to the hemisphere, `z = √(1 − x² − y²)`.
-/// Precondition: `u ∈ [0, 1]²`.
+/// ([`square_to_disk_concentric`]) lifted to the hemisphere, `z = √(1 − r²)` with `r` the
+/// point's radius, computed as `√((1 − r)(1 + r))` from the concentric map's exact `r` (rather
+/// than from `x² + y²`, whose rounding it would inherit). Precondition: `u ∈ [0, 1]²`.
 #[inline(always)]
 #[must_use]
 pub fn cosine_hemisphere(u: Vec2) -> Vec3 {
-    let d = square_to_disk_concentric(u);
-    Vec3::new(d.x, d.y, safe_sqrt(1.0 - d.x * d.x - d.y * d.y))
+    let (d, r) = concentric(u);
+    Vec3::new(d.x, d.y, safe_sqrt((1.0 - r) * (1.0 + r)))
 }
 
 /// The solid-angle density of [`cosine_hemisphere`]: `max(cos θ, 0) / π` (PBR 4th ed., §A.5).

@@ -1,5 +1,6 @@
-//! lobe against the `bsdf` crate (0.1.1, `f64`) on the same 4,096 inputs: criterion's
-//! per-function figures, then interleaved rounds (A B A B …) with the ratios.
+//! lobe (scalar and batched) against the `bsdf` crate (0.1.1, `f64`) on the same 4,096
+//! inputs: criterion's per-function figures, then interleaved rounds (A B C A B C …) with the
+//! ratios. (Mitsuba 3, which needs Python and LLVM: `benches/peers/vs_mitsuba.py`.)
 //!
 //! ```sh
 //! cargo bench -p lobe-peers
@@ -14,6 +15,7 @@ use bsdf::BSDF;
 use criterion::{Criterion, Throughput};
 use inputs::{Inputs, N, inputs};
 use interleave::{Kernel, ratio, rounds, spread};
+use lobe::batch::{Batch, SampleOut, Vec2s, Vec3s, Vec3sMut};
 use lobe::bxdf::{Bxdf, Lambert, Microfacet};
 use lobe::fresnel::Schlick;
 use lobe::microfacet::{Ggx, Masking};
@@ -92,6 +94,82 @@ fn lobe_kernels<'a, B: Bxdf<Spectrum = Vec3>>(
     ]
 }
 
+/// The inputs as structure-of-arrays slices, and output buffers, for the batched calls.
+struct Soa {
+    wo: [Vec<f32>; 3],
+    wi: [Vec<f32>; 3],
+    u: [Vec<f32>; 2],
+    uc: Vec<f32>,
+}
+
+fn to_soa(i: &Inputs) -> Soa {
+    let col = |v: &[Vec3], c: usize| v.iter().map(|w| w[c]).collect::<Vec<f32>>();
+    Soa {
+        wo: [col(&i.wo, 0), col(&i.wo, 1), col(&i.wo, 2)],
+        wi: [col(&i.wi, 0), col(&i.wi, 1), col(&i.wi, 2)],
+        u: [
+            i.u.iter().map(|u| u.x).collect(),
+            i.u.iter().map(|u| u.y).collect(),
+        ],
+        uc: i.uc.clone(),
+    }
+}
+
+/// The three calls of a lobe model through `lobe::batch`, each kernel owning its output
+/// buffers.
+fn batch_kernels<'a, B: Batch<Spectrum = Vec3>>(
+    name: &str,
+    m: &'a B,
+    s: &'a Soa,
+) -> [Kernel<'a>; 3] {
+    let m = black_box(m);
+    let v3 = |v: &'a [Vec<f32>; 3]| Vec3s {
+        x: &v[0],
+        y: &v[1],
+        z: &v[2],
+    };
+    let (wo, wi) = (v3(&s.wo), v3(&s.wi));
+    let u = Vec2s {
+        x: &s.u[0],
+        y: &s.u[1],
+    };
+    let buffers = |n: usize| -> Vec<Vec<f32>> { vec![vec![0.0; N]; n] };
+    [
+        Kernel::new(format!("{name} eval"), N, {
+            let mut o = buffers(3);
+            move || {
+                let [x, y, z] = &mut o[..] else {
+                    unreachable!()
+                };
+                m.eval_batch(wo, wi, Vec3sMut { x, y, z }).unwrap();
+                black_box(&o);
+            }
+        }),
+        Kernel::new(format!("{name} pdf"), N, {
+            let mut o = vec![0.0; N];
+            move || {
+                m.pdf_batch(wo, wi, &mut o).unwrap();
+                black_box(&o);
+            }
+        }),
+        Kernel::new(format!("{name} sample"), N, {
+            let mut o = buffers(7);
+            move || {
+                let [a, b, c, d, e, f, g] = &mut o[..] else {
+                    unreachable!()
+                };
+                let out = SampleOut {
+                    wi: Vec3sMut { x: a, y: b, z: c },
+                    f: Vec3sMut { x: d, y: e, z: f },
+                    pdf: g,
+                };
+                m.sample_batch(wo, u, &s.uc, out).unwrap();
+                black_box(&o);
+            }
+        }),
+    ]
+}
+
 /// The same three calls of a `bsdf` model.
 fn peer_kernels<'a, B: BSDF>(name: &str, m: &'a B, i: &'a Inputs64) -> [Kernel<'a>; 3] {
     let m = black_box(m);
@@ -123,49 +201,62 @@ fn main() {
         kd: bsdf::RgbF::new(0.8, 0.6, 0.4),
     };
 
-    // Pairs of (lobe, peer) kernels for the same work.
-    let mut pairs: Vec<(Kernel, Kernel)> = Vec::new();
+    // Triples of (lobe scalar, lobe batched, peer) kernels for the same work.
+    let soa = to_soa(&inputs);
+    let mut triples: Vec<[Kernel; 3]> = Vec::new();
     let lobe_c = lobe_kernels("GGX conductor, Schlick RGB: lobe", &conductor, &inputs);
+    let batch_c = batch_kernels("GGX conductor, Schlick RGB: lobe batched", &conductor, &soa);
     let peer_c = peer_kernels(
         "GGX conductor, Schlick RGB: bsdf",
         &peer_conductor,
         &inputs64,
     );
-    pairs.extend(lobe_c.into_iter().zip(peer_c));
+    for ((a, b), c) in lobe_c.into_iter().zip(batch_c).zip(peer_c) {
+        triples.push([a, b, c]);
+    }
     let lobe_l = lobe_kernels("Lambert RGB: lobe", &lambert, &inputs);
+    let batch_l = batch_kernels("Lambert RGB: lobe batched", &lambert, &soa);
     let peer_l = peer_kernels("Lambert RGB: bsdf", &peer_lambert, &inputs64);
-    pairs.extend(lobe_l.into_iter().zip(peer_l));
+    for ((a, b), c) in lobe_l.into_iter().zip(batch_l).zip(peer_l) {
+        triples.push([a, b, c]);
+    }
 
     // Criterion's own figures, one group per work.
     let mut c = Criterion::default()
         .measurement_time(Duration::from_secs(2))
         .warm_up_time(Duration::from_millis(500))
         .configure_from_args();
-    for (a, b) in &mut pairs {
+    for [a, b, p] in &mut triples {
         let work = a.name.replace(": lobe", "");
         let mut g = c.benchmark_group(work);
         g.throughput(Throughput::Elements(N as u64));
         g.bench_function("lobe", |bench| bench.iter(&mut a.pass));
-        g.bench_function("bsdf 0.1.1", |bench| bench.iter(&mut b.pass));
+        g.bench_function("lobe batched", |bench| bench.iter(&mut b.pass));
+        g.bench_function("bsdf 0.1.1", |bench| bench.iter(&mut p.pass));
         g.finish();
     }
 
     // Interleaved rounds: every kernel once per round, in the same order.
-    let mut kernels: Vec<Kernel> = pairs.into_iter().flat_map(|(a, b)| [a, b]).collect();
+    let mut kernels: Vec<Kernel> = triples.into_iter().flatten().collect();
     let times = rounds(&mut kernels, 15, Duration::from_millis(40));
     println!(
-        "\nInterleaved, 15 rounds, ns per evaluation: median [min, max]; ratio = median of per-round lobe/bsdf"
+        "\nInterleaved, 15 rounds, ns per evaluation: median [min, max]; ratios = medians of the per-round ratios"
     );
-    println!("| work | lobe | bsdf 0.1.1 | ratio |");
-    println!("| --- | --- | --- | --- |");
-    for pair in kernels.chunks(2).zip(times.chunks(2)) {
-        let (ks, ts) = pair;
-        let (la, lmin, lmax) = spread(&ts[0]);
-        let (pa, pmin, pmax) = spread(&ts[1]);
-        let (r, rmin, rmax) = ratio(&ts[0], &ts[1]);
+    println!("| work | lobe | lobe batched | bsdf 0.1.1 | lobe / bsdf | lobe scalar / batched |");
+    println!("| --- | --- | --- | --- | --- | --- |");
+    let fmt = |t: &[f64]| {
+        let (m, lo, hi) = spread(t);
+        format!("{m:.2} [{lo:.2}, {hi:.2}]")
+    };
+    for (ks, ts) in kernels.chunks(3).zip(times.chunks(3)) {
+        let (r, rmin, rmax) = ratio(&ts[0], &ts[2]);
+        let (x, xmin, xmax) = ratio(&ts[0], &ts[1]);
         println!(
-            "| {} | {la:.1} [{lmin:.1}, {lmax:.1}] | {pa:.1} [{pmin:.1}, {pmax:.1}] | {r:.2}× [{rmin:.2}, {rmax:.2}] |",
+            "| {} | {} | {} | {} | {r:.2}× [{rmin:.2}, {rmax:.2}] | {x:.1}× [{xmin:.1}, {xmax:.1}] |",
             ks[0].name.replace(": lobe", ""),
+            fmt(&ts[0]),
+            fmt(&ts[1]),
+            fmt(&ts[2]),
         );
     }
 }
