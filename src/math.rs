@@ -310,6 +310,19 @@ pub(crate) fn gauss_legendre(a: f32, b: f32, f: impl Fn(f32) -> f32) -> f32 {
     sum * half
 }
 
+/// The cosine-weighted average of `g` over the hemisphere, `2 ∫₀¹ g(μ) μ dμ` (`μ = cos θ`),
+/// by 8-point Gauss-Legendre on 16 panels: the average of a directional albedo `E(μ)` over
+/// uniformly incident light (`Ē`), for the tables models build at construction.
+pub(crate) fn cosine_weighted_average(g: impl Fn(f32) -> f32) -> f32 {
+    const PANELS: usize = 16;
+    (0..PANELS)
+        .map(|p| {
+            let (a, b) = (p as f32 / PANELS as f32, (p + 1) as f32 / PANELS as f32);
+            2.0 * gauss_legendre(a, b, |mu| g(mu) * mu)
+        })
+        .sum()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -391,7 +391,7 @@ fn lobes_form_and_accessors() {
     assert_eq!(BlinnPhongForm::default(), Normalized);
     let m = BlinnPhong::new(0.25_f32, 0.5, 7.0, Modified).unwrap();
     assert_eq!(
-        (m.diffuse(), m.ks(), m.exponent(), m.form()),
+        (m.kd(), m.ks(), m.exponent(), m.form()),
         (0.25, 0.5, 7.0, Modified)
     );
     // The choice follows uc: below P_d = 1/3 diffuse, above glossy.
@@ -411,14 +411,14 @@ fn refuses_bad_parameters() {
     for form in [Modified, Normalized] {
         for bad in [f32::NAN, -0.1, 1.5, f32::INFINITY] {
             let e = BlinnPhong::new(bad, 0.0, 1.0, form).unwrap_err();
-            assert_eq!(e.param(), "diffuse");
+            assert_eq!(e.param(), "kd");
             assert_eq!(
                 BlinnPhong::new(0.0, bad, 1.0, form).unwrap_err().param(),
                 "ks"
             );
         }
         let e = BlinnPhong::new(0.6_f32, 0.5, 1.0, form).unwrap_err();
-        assert_eq!((e.param(), e.range()), ("diffuse + ks", "[0, 1]"));
+        assert_eq!((e.param(), e.range()), ("kd + ks", "[0, 1]"));
         for bad in [f32::NAN, -1.0, 1.1e6, f32::INFINITY] {
             let e = BlinnPhong::new(0.5_f32, 0.5, bad, form).unwrap_err();
             assert_eq!((e.param(), e.range()), ("exponent", "[0, 1000000]"));

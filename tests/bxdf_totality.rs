@@ -221,3 +221,24 @@ fn samples_with_subnormal_densities_are_refused() {
         }
     }
 }
+
+/// Debug builds check the hot loop's preconditions (unit directions, random numbers in
+/// `[0, 1]`) and say which one a call broke.
+#[test]
+#[cfg(debug_assertions)]
+#[should_panic(expected = "not of unit length")]
+fn debug_builds_refuse_a_direction_that_is_not_unit() {
+    let _ = Lambert::new(0.5_f32)
+        .unwrap()
+        .eval(Vec3::new(0.0, 0.0, 2.0), Vec3::Z);
+}
+
+/// The same for the random numbers.
+#[test]
+#[cfg(debug_assertions)]
+#[should_panic(expected = "outside [0, 1]")]
+fn debug_builds_refuse_a_random_number_outside_the_unit_interval() {
+    let _ = Lambert::new(0.5_f32)
+        .unwrap()
+        .sample(Vec3::Z, Vec2::new(1.5, 0.5), 0.5);
+}

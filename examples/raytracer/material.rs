@@ -1,47 +1,11 @@
 //! [`Material`]: a `lobe` model behind a trait object, with what the integrators need to know
 //! about it.
 
-use lobe::bxdf::{Bxdf, BxdfSample, Lobes, ThinDielectric};
+use lobe::bxdf::{Bxdf, Lobes, ThinDielectric};
 use lobe::{ComplexIor, Eta, Vec2, Vec3};
 
 /// A scattering model as the renderer holds it: any `lobe` model with RGB values.
 pub type DynBxdf = dyn Bxdf<Spectrum = Vec3> + Send + Sync;
-
-/// Lifts a monochrome (`f32`) model to RGB by repeating its value in every channel: the
-/// dielectric models (`RoughDielectric`, `SmoothDielectric`, `ThinDielectric`) are `f32`
-/// only, the same at every wavelength.
-#[derive(Clone, Copy, Debug)]
-pub struct Mono<B>(pub B);
-
-impl<B: Bxdf<Spectrum = f32>> Bxdf for Mono<B> {
-    type Spectrum = Vec3;
-
-    #[inline]
-    fn eval(&self, wo: Vec3, wi: Vec3) -> Vec3 {
-        Vec3::splat(self.0.eval(wo, wi))
-    }
-
-    #[inline]
-    fn sample(&self, wo: Vec3, u: Vec2, uc: f32) -> Option<BxdfSample<Vec3>> {
-        self.0.sample(wo, u, uc).map(|s| BxdfSample {
-            wi: s.wi,
-            f: Vec3::splat(s.f),
-            pdf: s.pdf,
-            lobe: s.lobe,
-            eta: s.eta,
-        })
-    }
-
-    #[inline]
-    fn pdf(&self, wo: Vec3, wi: Vec3) -> f32 {
-        self.0.pdf(wo, wi)
-    }
-
-    #[inline]
-    fn lobes(&self) -> Lobes {
-        self.0.lobes()
-    }
-}
 
 /// The perfectly specular part of a material as the Whitted integrator sees it: which
 /// recursive rays to trace (seed 003, "Mirror reflection", "Refraction at boundary of
@@ -129,11 +93,14 @@ fn non_delta_albedo(bsdf: &impl Bxdf<Spectrum = Vec3>) -> Vec3 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use lobe::bxdf::{Lambert, SmoothDielectric};
+    use lobe::bxdf::{Lambert, Mono, SmoothDielectric};
 
     #[test]
     fn mono_repeats_the_channel_and_ambient_skips_deltas() {
-        let glass = Material::new("glass", Mono(SmoothDielectric::new(Eta::new(1.5).unwrap())));
+        let glass = Material::new(
+            "glass",
+            Mono::new(SmoothDielectric::new(Eta::new(1.5).unwrap())),
+        );
         assert!(glass.transmits());
         assert_eq!(glass.ambient, Vec3::ZERO);
         let s = glass.bsdf.sample(Vec3::Z, Vec2::splat(0.5), 0.9).unwrap();

@@ -60,8 +60,8 @@ impl<'a> ShadingPoint<'a> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::material::Mono;
     use lobe::Eta;
+    use lobe::bxdf::Mono;
     use lobe::bxdf::{Lambert, SmoothDielectric};
 
     fn hit(n: Vec3) -> Hit {
@@ -79,7 +79,10 @@ mod tests {
     #[test]
     fn reflection_flips_toward_the_viewer_transmission_does_not() {
         let white = Material::new("white", Lambert::new(Vec3::ONE).unwrap());
-        let glass = Material::new("glass", Mono(SmoothDielectric::new(Eta::new(1.5).unwrap())));
+        let glass = Material::new(
+            "glass",
+            Mono::new(SmoothDielectric::new(Eta::new(1.5).unwrap())),
+        );
         let below = -Vec3::Y;
         let sp = ShadingPoint::new(&white, &hit(Vec3::Y), below);
         assert!(sp.wo.z > 0.0 && sp.ng == -Vec3::Y);

@@ -3,7 +3,7 @@
 use super::Batch;
 use crate::bxdf::{
     BlinnPhong, DisneyDiffuse, EnergyPreservingOrenNayar, Glazed, Lambert, Microfacet, Mirror,
-    OrenNayar, Phong, Plastic, RoughDielectric, SmoothDielectric, ThinDielectric,
+    Mono, OrenNayar, Phong, Plastic, RoughDielectric, SmoothDielectric, ThinDielectric,
 };
 use crate::fresnel::Fresnel;
 use crate::microfacet::NormalDistribution;
@@ -25,6 +25,7 @@ impl<S: Spectrum + Lanes> Batch for Glazed<S> {}
 impl<D: NormalDistribution, S: Spectrum + Lanes> Batch for Plastic<D, S> {}
 impl<F: Fresnel> Batch for Mirror<F> where F::Spectrum: Lanes {}
 impl Batch for SmoothDielectric {}
+impl<B: Prepare<Spectrum = f32>, S: Spectrum + Lanes> Batch for Mono<B, S> {}
 impl Batch for ThinDielectric {}
 /// A model whose value depends on a masking term chosen at run time: the batched loops fix
 /// it at compile time, so that the loop does not branch on it.

@@ -113,7 +113,7 @@ pub enum BlinnPhongForm {
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct BlinnPhong<S = f32> {
-    diffuse: S,
+    kd: S,
     ks: S,
     exponent: f32,
     form: BlinnPhongForm,
@@ -131,36 +131,37 @@ impl<S: Spectrum> BlinnPhong<S> {
     /// The largest accepted exponent.
     pub const MAX_EXPONENT: f32 = 1e6;
 
-    /// A Blinn-Phong BRDF with diffuse reflectance `R`, specular weight `ks`, exponent
+    /// A Blinn-Phong BRDF with diffuse weight `kd` (the handout's reflectance `R`), specular
+    /// weight `ks`, exponent
     /// `exponent` and the lobe's `form`.
     ///
     /// # Errors
-    /// [`ParamError`] naming `diffuse` or `ks` for a channel that is NaN or outside `[0, 1]`,
-    /// `diffuse + ks` for a channel where their sum exceeds 1, or `exponent` for NaN or a value
+    /// [`ParamError`] naming `kd` or `ks` for a channel that is NaN or outside `[0, 1]`,
+    /// `kd + ks` for a channel where their sum exceeds 1, or `exponent` for NaN or a value
     /// outside `[0, 1e6]`.
-    pub fn new(diffuse: S, ks: S, exponent: f32, form: BlinnPhongForm) -> Result<Self, ParamError> {
-        let diffuse = crate::param::unit_interval("diffuse", diffuse)?;
+    pub fn new(kd: S, ks: S, exponent: f32, form: BlinnPhongForm) -> Result<Self, ParamError> {
+        let kd = crate::param::unit_interval("kd", kd)?;
         let ks = crate::param::unit_interval("ks", ks)?;
-        check_sum(diffuse, ks, "diffuse + ks")?;
+        check_sum(kd, ks, "kd + ks")?;
         let p = check_exponent(exponent)?;
-        let p_diffuse = diffuse_probability(diffuse, ks);
+        let p_diffuse = diffuse_probability(kd, ks);
         Ok(Self {
-            diffuse,
+            kd,
             ks,
             exponent: p,
             form,
-            diffuse_over_pi: diffuse * FRAC_1_PI,
+            diffuse_over_pi: kd * FRAC_1_PI,
             glossy: ks * lobe_factor(form, p),
             p_diffuse,
             pdf_glossy: (1.0 - p_diffuse) * cos_power_norm(p) * 0.5,
         })
     }
 
-    /// The diffuse reflectance `R`.
+    /// The diffuse weight `k_d` (the handout's `R`).
     #[inline]
     #[must_use]
-    pub fn diffuse(&self) -> S {
-        self.diffuse
+    pub fn kd(&self) -> S {
+        self.kd
     }
 
     /// The specular weight `k_s`.
@@ -194,7 +195,7 @@ impl<S: Spectrum> BlinnPhong<S> {
         let p = self.exponent;
         let lobe =
             8.0 * PI * (p + exp(-0.5 * core::f32::consts::LN_2 * p)) / ((p + 2.0) * (p + 4.0));
-        self.diffuse + self.glossy * lobe
+        self.kd + self.glossy * lobe
     }
 
     /// `((n·h)^p, |wo + wi|)` for `wo`, `wi` above the surface; `(0, 1)` when `wo + wi`
@@ -303,6 +304,6 @@ impl<S: Spectrum> Prepare for BlinnPhong<S> {
 
     #[inline]
     fn lobes(&self) -> Lobes {
-        weighted_lobes(self.diffuse, self.ks)
+        weighted_lobes(self.kd, self.ks)
     }
 }

@@ -42,7 +42,7 @@ impl<S: Spectrum> Glazed<S> {
     /// [`ParamError`] naming `reflectance` for a channel that is NaN or outside `[0, 1]`.
     pub fn new(reflectance: S, eta: Eta) -> Result<Self, ParamError> {
         let reflectance = unit_interval("reflectance", reflectance)?;
-        let f_avg = cosine_weighted_average(|mu| dielectric(mu, eta));
+        let f_avg = crate::math::cosine_weighted_average(|mu| dielectric(mu, eta));
         // A coat that reflects everything (η far below 1: total internal reflection at almost
         // every angle) lets no light reach the base: no diffuse term, rather than 0 · ∞.
         let diffuse_scale = if f_avg < 1.0 {
@@ -75,17 +75,6 @@ impl<S: Spectrum> Glazed<S> {
         let total = f + diffuse;
         (if total > 0.0 { f / total } else { 0.0 }, f)
     }
-}
-
-/// `2 ∫₀¹ g(μ) μ dμ`, by 8-point Gauss-Legendre on 16 panels.
-pub(crate) fn cosine_weighted_average(g: impl Fn(f32) -> f32) -> f32 {
-    const PANELS: usize = 16;
-    (0..PANELS)
-        .map(|p| {
-            let (a, b) = (p as f32 / PANELS as f32, (p + 1) as f32 / PANELS as f32);
-            2.0 * crate::math::gauss_legendre(a, b, |mu| g(mu) * mu)
-        })
-        .sum()
 }
 
 impl<S: Spectrum> Prepare for Glazed<S> {

@@ -25,6 +25,7 @@ mod glazed;
 mod lambert;
 mod microfacet;
 mod mirror;
+mod mono;
 mod oren_nayar;
 mod phong;
 mod plastic;
@@ -39,6 +40,7 @@ pub use glazed::Glazed;
 pub use lambert::Lambert;
 pub use microfacet::{Microfacet, RoughConductor};
 pub use mirror::Mirror;
+pub use mono::Mono;
 pub use oren_nayar::OrenNayar;
 pub use phong::Phong;
 pub use plastic::{Plastic, PlasticState};
@@ -231,7 +233,8 @@ impl<V> At<V> {
 /// Implementations are total: for any finite unit `wo`, `wi` and `u ∈ [0, 1)²`, `uc ∈ [0, 1)`,
 /// `eval` is finite and non-negative, `pdf` finite and non-negative, and `sample` returns
 /// either `None` or a sample with a unit `wi`, a finite non-negative `f` and a positive finite
-/// `pdf`.
+/// `pdf`. The crate's models check the unit lengths and the random numbers' range with
+/// `debug_assert!` in debug builds; release builds check nothing and stay total.
 ///
 /// The crate's models implement [`Prepare`], which gives them this trait; implement it
 /// directly for a model of your own (or implement [`Prepare`], or [`CosineSampled`] for a
@@ -337,21 +340,42 @@ pub trait Prepare {
     fn lobes(&self) -> Lobes;
 }
 
+/// The preconditions of a hot-loop call, checked in debug builds (like glam's
+/// `glam_assert`): directions of unit length (to 1e-3; the models are accurate for any
+/// rounding of a unit vector) and random numbers in `[0, 1]`. Release builds check nothing
+/// and stay total: any finite input gives a finite, non-negative answer.
+#[inline(always)]
+fn debug_check(w: &[Vec3], u: &[f32]) {
+    debug_assert!(
+        w.iter().all(|w| (w.length_squared() - 1.0).abs() <= 1e-3),
+        "lobe: a direction is not of unit length: {w:?}"
+    );
+    debug_assert!(
+        u.iter().all(|u| (0.0..=1.0).contains(u)),
+        "lobe: a random number is outside [0, 1]: {u:?}"
+    );
+}
+
+/// Every [`Prepare`] model is a [`Bxdf`], its calls checking their preconditions in debug
+/// builds ([`debug_assert!`]: unit directions, random numbers in `[0, 1]`).
 impl<T: Prepare> Bxdf for T {
     type Spectrum = T::Spectrum;
 
     #[inline(always)]
     fn eval(&self, wo: Vec3, wi: Vec3) -> T::Spectrum {
+        debug_check(&[wo, wi], &[]);
         self.eval_prepared(&self.prepare(wo), wi)
     }
 
     #[inline(always)]
     fn sample(&self, wo: Vec3, u: Vec2, uc: f32) -> Option<BxdfSample<T::Spectrum>> {
+        debug_check(&[wo], &[u.x, u.y, uc]);
         self.sample_prepared(&self.prepare(wo), u, uc)
     }
 
     #[inline(always)]
     fn pdf(&self, wo: Vec3, wi: Vec3) -> f32 {
+        debug_check(&[wo, wi], &[]);
         self.pdf_prepared(&self.prepare(wo), wi)
     }
 

@@ -1,6 +1,5 @@
 //! A diffuse base under a rough dielectric coat: the glazed material's rough variant.
 
-use super::glazed::cosine_weighted_average;
 use super::{At, Bxdf, BxdfSample, Lobes, Microfacet, Prepare, both_above, usable_pdf};
 use crate::fresnel::Dielectric;
 use crate::microfacet::{Masking, NormalDistribution};
@@ -66,7 +65,7 @@ impl<D: NormalDistribution, S: Spectrum> Plastic<D, S> {
             coat_albedo,
             diffuse_scale: 0.0,
         };
-        let e_avg = cosine_weighted_average(|mu| plastic.coat_albedo_at(mu));
+        let e_avg = crate::math::cosine_weighted_average(|mu| plastic.coat_albedo_at(mu));
         plastic.diffuse_scale = if e_avg < 1.0 {
             FRAC_1_PI / (1.0 - e_avg)
         } else {

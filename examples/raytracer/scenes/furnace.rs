@@ -6,8 +6,9 @@
 
 use crate::camera::Camera;
 use crate::environment::Environment;
-use crate::material::{Interface, Material, Mono};
+use crate::material::{Interface, Material};
 use crate::scene::{Scene, SceneBuilder};
+use lobe::bxdf::Mono;
 use lobe::bxdf::{Glazed, Lambert, Microfacet, SmoothDielectric};
 use lobe::fresnel::NoFresnel;
 use lobe::microfacet::{Ggx, Masking};
@@ -33,7 +34,7 @@ pub fn ggx_no_fresnel(alpha: f32) -> Result<Material, ParamError> {
 /// Smooth glass, η = 1.5.
 pub fn smooth_glass() -> Result<Material, ParamError> {
     let eta = Eta::new(1.5)?;
-    let glass = Material::new("smooth glass", Mono(SmoothDielectric::new(eta)));
+    let glass = Material::new("smooth glass", Mono::new(SmoothDielectric::new(eta)));
     Ok(glass.with_interface(Interface::Dielectric(eta)))
 }
 

@@ -5,10 +5,11 @@
 use crate::camera::Camera;
 use crate::environment::Environment;
 use crate::light::Light;
-use crate::material::{Interface, Material, Mono};
+use crate::material::{Interface, Material};
 use crate::mesh::Mesh;
 use crate::quad::Quad;
 use crate::scene::{Scene, SceneBuilder};
+use lobe::bxdf::Mono;
 use lobe::bxdf::{Lambert, Microfacet, Plastic, SmoothDielectric};
 use lobe::fresnel::Conductor;
 use lobe::metals;
@@ -44,7 +45,7 @@ pub fn build(aspect: f32) -> Result<Scene, String> {
     );
     let gold = b.material(Material::new("GGX gold", gold));
     let clear = b.material(
-        Material::new("glass", Mono(SmoothDielectric::new(glass)))
+        Material::new("glass", Mono::new(SmoothDielectric::new(glass)))
             .with_interface(Interface::Dielectric(glass)),
     );
     let floor = b.material(Material::new(

@@ -4,9 +4,10 @@
 use crate::camera::Camera;
 use crate::checker::Checker;
 use crate::environment::Environment;
-use crate::material::{Interface, Material, Mono};
+use crate::material::{Interface, Material};
 use crate::quad::Quad;
 use crate::scene::{Scene, SceneBuilder};
+use lobe::bxdf::Mono;
 use lobe::bxdf::{
     BlinnPhong, BlinnPhongForm, DisneyDiffuse, EnergyPreservingOrenNayar, Glazed, Lambert,
     Microfacet, Mirror, OrenNayar, Phong, Plastic, RoughDielectric, SmoothDielectric,
@@ -108,15 +109,21 @@ pub fn materials() -> Result<Vec<Material>, ParamError> {
         .with_interface(Interface::Coat(glass)),
         Material::new("Mirror (silver)", Mirror::new(Conductor { ior: silver }))
             .with_interface(Interface::Conductor(silver)),
-        Material::new("smooth glass η=1.5", Mono(SmoothDielectric::new(glass)))
-            .with_interface(Interface::Dielectric(glass)),
         Material::new(
-            "rough glass GGX α=0.15",
-            Mono(RoughDielectric::new(ggx(0.15)?, glass)),
+            "smooth glass η=1.5",
+            Mono::new(SmoothDielectric::new(glass)),
         )
         .with_interface(Interface::Dielectric(glass)),
-        Material::new("thin dielectric η=1.5", Mono(ThinDielectric::new(glass)))
-            .with_interface(Interface::Thin(ThinDielectric::new(glass))),
+        Material::new(
+            "rough glass GGX α=0.15",
+            Mono::new(RoughDielectric::new(ggx(0.15)?, glass)),
+        )
+        .with_interface(Interface::Dielectric(glass)),
+        Material::new(
+            "thin dielectric η=1.5",
+            Mono::new(ThinDielectric::new(glass)),
+        )
+        .with_interface(Interface::Thin(ThinDielectric::new(glass))),
     ])
 }
 
