@@ -16,6 +16,57 @@
 //! A renderer that shades both sides of a surface flips its shading frame toward `wo`.
 //! Transmissive models take `wo` on either side; the relative index `eta` is
 //! `η_inside / η_outside` with the normal pointing outside.
+//!
+//! ## The hot path: prepared state
+//!
+//! A renderer evaluates many `wi` against one `wo`: every light of next-event estimation, the
+//! MIS partner of the BSDF's own sample, the sample itself. What depends on `wo` alone is
+//! computed once, not once per call:
+//!
+//! * **Distribution layer.** [`NormalDistribution::view`](crate::microfacet::NormalDistribution::view)
+//!   turns a direction into a [`View`](crate::microfacet::View): `Λ(w)`, the visible-normal
+//!   factor `G1(w)/cos θ`, and what the distribution's sampler keeps (GGX: the stretched
+//!   view, the bounded-VNDF cap, the reflection density's factor, `|(αx wx, αy wy, wz)|`).
+//!   Its densities take `D(m)` from the caller, who evaluated it for the value already.
+//! * **Model layer.** [`Prepare::prepare`] holds `wo` and the model's own state in an
+//!   [`At`] (a microfacet model: the distribution's view of `wo`; [`Plastic`]: that and its
+//!   coat's albedo at `wo`; [`Glazed`]: the coat's Fresnel at `wo`), and the
+//!   `*_prepared` calls reuse it. [`Prepare::eval_pdf_prepared`] gives a light sample's value
+//!   and density for one `D`; [`Prepare::sample_prepared`] returns the value and density it
+//!   computed on the way.
+//! * **Plain calls.** Every `Prepare` model is a [`Bxdf`], whose `eval(wo, wi)` is
+//!   `eval_prepared(&prepare(wo), wi)`: the same numbers, bit for bit. For a single call the
+//!   compiler inlines both and drops what the call does not use (`eval` never computes the
+//!   sampler's cap).
+//! * **Batches.** [`crate::batch`] runs the same prepared calls over slices, vectorised.
+//!
+//! The layers stay one-way: a model calls its distribution's view and densities, never the
+//! reverse, and the batched loops call the models.
+//!
+//! ```
+//! use lobe::bxdf::{Microfacet, Prepare};
+//! use lobe::fresnel::Conductor;
+//! use lobe::microfacet::{Ggx, Masking};
+//! use lobe::{metals, Alpha, Vec2, Vec3};
+//! let gold = Microfacet::new(
+//!     Ggx::isotropic(Alpha::new(0.3)?),
+//!     Masking::HeightCorrelated,
+//!     Conductor { ior: metals::GOLD.rgb() },
+//! );
+//! let wo = Vec3::new(0.0, 0.6, 0.8);
+//! let at = gold.prepare(wo); // once per shading point
+//! let lights = [Vec3::new(0.0, -0.6, 0.8), Vec3::new(0.6, 0.0, 0.8)];
+//! let direct: Vec3 = lights
+//!     .iter()
+//!     .map(|&wi| {
+//!         let (f, _pdf) = gold.eval_pdf_prepared(&at, wi); // value and MIS density, one D
+//!         f * wi.z
+//!     })
+//!     .sum();
+//! let bounce = gold.sample_prepared(&at, Vec2::new(0.25, 0.75), 0.5);
+//! assert!(direct.x > 0.0 && bounce.is_some());
+//! # Ok::<(), lobe::ParamError>(())
+//! ```
 
 mod blinn_phong;
 mod diffuse_glossy;
@@ -290,7 +341,7 @@ pub trait Bxdf {
 /// );
 /// let wo = Vec3::new(0.0, 0.6, 0.8);
 /// let at = brdf.prepare(wo); // once per shading point
-/// for wi in [Vec3::new(0.0, -0.6, 0.8), Vec3::new(0.28, -0.48, 0.83)] {
+/// for wi in [Vec3::new(0.0, -0.6, 0.8), Vec3::new(0.36, -0.48, 0.8)] {
 ///     let (f, pdf) = brdf.eval_pdf_prepared(&at, wi); // a light sample, one D
 ///     assert_eq!((f, pdf), (brdf.eval(wo, wi), brdf.pdf(wo, wi)));
 /// }
