@@ -96,33 +96,20 @@
 //! assert!(estimate.within(2.0 / 3.0, 4.0), "{estimate}");
 //! ```
 
-mod bxdf;
-mod check;
-mod chi2;
-mod estimate;
-mod gamma;
-mod ndf;
-mod report;
-mod rng;
-mod significance;
+mod laws;
+mod stats;
 #[cfg(feature = "proptest")]
 pub mod strategies;
 
-pub use bxdf::{
-    BxdfCheck, ReciprocityPair, SUBNORMAL_FLOOR, albedo_cosine, albedo_sampled, chi2_bxdf,
-    reciprocity_pair, sample_consistency,
+pub use laws::{
+    Albedo, BxdfCheck, Config, Law, LawReport, NdfCheck, NdfConfig, ReciprocityPair, Report,
+    SUBNORMAL_FLOOR, albedo, albedo_cosine, albedo_sampled, check_bxdf, check_ndf, chi2_bxdf,
+    chi2_normals, consistency, d_normalization, energy_bound, positivity, projected_area,
+    projected_area_masked, reciprocity, reciprocity_pair, sample_consistency, sampling_chi2,
+    visible_normalization,
 };
-pub use check::{
-    Albedo, Config, albedo, check_bxdf, consistency, energy_bound, positivity, reciprocity,
-    sampling_chi2, two_sided_quantile,
+pub use stats::{
+    Accumulator, Chi2Bin, Chi2Config, Chi2Report, Chi2Residual, Estimate, Pcg32, chi2_sphere,
+    chi2_sphere_rng, chi2_survival, gamma_p, gamma_q, integrate_hemisphere, ln_gamma, sidak,
+    two_sided_quantile,
 };
-pub use chi2::{Chi2Bin, Chi2Config, Chi2Report, Chi2Residual, chi2_sphere, chi2_sphere_rng};
-pub use estimate::{Accumulator, Estimate};
-pub use gamma::{chi2_survival, gamma_p, gamma_q, ln_gamma};
-pub use ndf::{
-    NdfCheck, NdfConfig, check_ndf, chi2_normals, d_normalization, projected_area,
-    projected_area_masked, visible_normalization,
-};
-pub use report::{Law, LawReport, Report};
-pub use rng::Pcg32;
-pub use significance::sidak;

@@ -1,13 +1,22 @@
-//! The law checks of a BSDF as reports, and [`check_bxdf`], which runs every law that applies.
+//! The laws of a BSDF, measured, reported and checked: positivity, reciprocity (plain and
+//! generalised across an interface), the energy bound by two independent albedo estimators,
+//! the sampler against its pdf (chi-square), and the agreement of `sample` with `eval` and
+//! `pdf`; [`check_bxdf`] runs every law that applies.
+//!
+//! The measurements come first (the albedo estimators, one reciprocity pair, the consistency
+//! of one viewer direction), then the law reports built on them.
+//!
+//! The laws are checked on `f32` models (they hold per channel); a spectral model is checked
+//! by instantiating it on `f32`.
 
-use super::bxdf::{
-    BxdfCheck, SUBNORMAL_FLOOR, albedo_cosine, albedo_sampled, chi2_bxdf, reciprocity_pair,
-    sample_consistency,
-};
+use super::config::Config;
 use super::report::{Law, LawReport, Report};
-use super::{Chi2Config, Estimate, Pcg32, gamma_q, sidak};
 use crate::bxdf::Bxdf;
-use crate::sampling::uniform_sphere;
+use crate::sampling::{cosine_hemisphere, cosine_hemisphere_pdf, uniform_sphere};
+use crate::verify::stats::{
+    Accumulator, Chi2Config, Chi2Report, Estimate, Pcg32, chi2_sphere_rng, sidak,
+    two_sided_quantile,
+};
 use glam::Vec3;
 use std::format;
 use std::string::String;
@@ -17,106 +26,218 @@ use std::vec::Vec;
 /// zero-variance estimator match an exact bound.
 const F32_ROUND_OFF: f64 = 1e-6;
 
-/// Settings of the BSDF law checks.
-///
-/// ```
-/// use lobe::verify::Config;
-/// let quick = Config { albedo_samples: 20_000, chi2_samples: 50_000, ..Config::default() };
-/// assert_eq!(quick.albedo_bound, 1.0);
-/// ```
-#[derive(Clone, Debug, PartialEq)]
-pub struct Config {
-    /// Monte Carlo samples per albedo estimate (per direction, per estimator). Default 100 000.
-    pub albedo_samples: usize,
-    /// Samples per chi-square test (per direction). Default 200 000.
-    pub chi2_samples: usize,
-    /// Random direction pairs for positivity and reciprocity. Default 20 000.
-    pub pairs: usize,
-    /// Samples per direction for the consistency check. Default 20 000.
-    pub consistency_samples: usize,
-    /// Seed of every generator. Default 1.
+/// The stream of these checks' generator, apart from the chi-square test's.
+const STREAM: u64 = 0x0062_7364;
+
+/// Settings of the Monte Carlo checks in this module.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct BxdfCheck {
+    /// Samples per estimate. Default 200 000.
+    pub samples: usize,
+    /// Seed of the [`Pcg32`] that draws the random numbers. Default 1.
     pub seed: u64,
-    /// The chance of failing a correct model, for the whole run: each statistical test is
-    /// held to the Šidák-corrected share of it. Default 0.01.
-    pub significance: f64,
-    /// The viewer directions of the albedo, sampling and consistency checks. Empty (the
-    /// default) means `θo ∈ {0°, 30°, 60°, 80°, 89°}` at `φ = 0.4`, mirrored below the
-    /// surface too for a transmissive model.
-    pub directions: Vec<Vec3>,
-    /// The largest directional albedo the model claims. Default 1 (energy conservation).
-    pub albedo_bound: f64,
-    /// The relative index below the surface, for generalised reciprocity: `η` for a model in
-    /// radiance mode, `1/η` in importance mode, 1 (the default) for a BRDF.
-    pub eta: f32,
-    /// The relative tolerance of reciprocity (beyond each pair's round-off allowance).
-    /// Default 1e-5.
-    pub reciprocity_tolerance: f64,
-    /// The relative tolerance of `sample` against `eval`/`pdf`. Default 1e-4.
-    pub consistency_tolerance: f64,
 }
 
-impl Default for Config {
+impl Default for BxdfCheck {
     fn default() -> Self {
         Self {
-            albedo_samples: 100_000,
-            chi2_samples: 200_000,
-            pairs: 20_000,
-            consistency_samples: 20_000,
+            samples: 200_000,
             seed: 1,
-            significance: 0.01,
-            directions: Vec::new(),
-            albedo_bound: 1.0,
-            eta: 1.0,
-            reciprocity_tolerance: 1e-5,
-            consistency_tolerance: 1e-4,
         }
     }
 }
 
-impl Config {
-    /// The viewer directions for `bxdf`: [`Config::directions`], or the default set.
-    #[must_use]
-    pub fn viewer_directions<B: Bxdf + ?Sized>(&self, bxdf: &B) -> Vec<Vec3> {
-        if !self.directions.is_empty() {
-            return self.directions.clone();
-        }
-        let mut out: Vec<Vec3> = [0.0f32, 30.0, 60.0, 80.0, 89.0]
-            .iter()
-            .map(|t| {
-                let (s, c) = t.to_radians().sin_cos();
-                Vec3::new(s * 0.4f32.cos(), s * 0.4f32.sin(), c)
-            })
-            .collect();
-        if bxdf.lobes().is_transmissive() {
-            let below: Vec<Vec3> = out.iter().map(|w| Vec3::new(w.x, w.y, -w.z)).collect();
-            out.extend(below);
-        }
-        out
-    }
-
-    fn bxdf_check(&self, samples: usize) -> BxdfCheck {
-        BxdfCheck {
-            samples,
-            seed: self.seed,
-        }
-    }
-}
-
-/// The two-sided normal quantile `k` with `P(|Z| > k) = p`, by bisection on
-/// `erfc(k/√2) = Q(½, k²/2)`.
+/// The directional albedo `∫ f(wo, wi) |cos θi| dωi` estimated with the model's own sampler:
+/// the mean of [`BxdfSample::weight`](crate::bxdf::BxdfSample::weight), a failed sample
+/// counting as zero. Includes delta lobes.
 #[must_use]
-pub fn two_sided_quantile(p: f64) -> f64 {
-    let tail = |k: f64| gamma_q(0.5, 0.5 * k * k);
-    let (mut lo, mut hi) = (0.0_f64, 40.0_f64);
-    for _ in 0..200 {
-        let mid = 0.5 * (lo + hi);
-        if tail(mid) > p {
-            lo = mid;
+pub fn albedo_sampled<B: Bxdf<Spectrum = f32> + ?Sized>(
+    bxdf: &B,
+    wo: Vec3,
+    check: &BxdfCheck,
+) -> Estimate {
+    let mut rng = Pcg32::new(check.seed, STREAM);
+    let mut acc = Accumulator::new();
+    for _ in 0..check.samples {
+        let u = rng.next_vec2();
+        let uc = rng.next_f32();
+        let w = bxdf
+            .sample(wo, u, uc)
+            .map_or(0.0, |s| f64::from(s.weight()));
+        acc.push(w);
+    }
+    acc.finish()
+}
+
+/// The directional albedo estimated independently of the model's sampler: `wi` cosine-
+/// distributed over the upper hemisphere, and also over the lower one (each with probability
+/// ½) when the model transmits. Misses delta lobes, which have no density.
+#[must_use]
+pub fn albedo_cosine<B: Bxdf<Spectrum = f32> + ?Sized>(
+    bxdf: &B,
+    wo: Vec3,
+    check: &BxdfCheck,
+) -> Estimate {
+    let both_sides = bxdf.lobes().is_transmissive();
+    let mut rng = Pcg32::new(check.seed, STREAM ^ 1);
+    let mut acc = Accumulator::new();
+    for _ in 0..check.samples {
+        let mut wi = cosine_hemisphere(rng.next_vec2());
+        let mut pdf = f64::from(cosine_hemisphere_pdf(wi.z));
+        if both_sides {
+            pdf *= 0.5;
+            if rng.next_f32() < 0.5 {
+                wi.z = -wi.z;
+            }
+        }
+        let value = if pdf > 0.0 {
+            f64::from(bxdf.eval(wo, wi)) * f64::from(wi.z.abs()) / pdf
         } else {
-            hi = mid;
+            0.0
+        };
+        acc.push(value);
+    }
+    acc.finish()
+}
+
+/// The chi-square test of [`Bxdf::sample`] against [`Bxdf::pdf`] for the viewer direction
+/// `wo`. Samples from delta lobes, and failed samples, count as "no sample": `pdf` then
+/// integrates to less than one, and the test checks that the missing mass matches them.
+pub fn chi2_bxdf<B: Bxdf + ?Sized>(bxdf: &B, wo: Vec3, config: &Chi2Config) -> Chi2Report {
+    chi2_sphere_rng(
+        |rng| {
+            let u = rng.next_vec2();
+            let uc = rng.next_f32();
+            bxdf.sample(wo, u, uc)
+                .filter(|s| !s.is_specular())
+                .map(|s| s.wi)
+        },
+        |wi| f64::from(bxdf.pdf(wo, wi)),
+        config,
+    )
+}
+
+/// How far [`Bxdf::sample`]'s `f` and `pdf` are from [`Bxdf::eval`] and [`Bxdf::pdf`] at the
+/// sampled direction: the largest relative differences `(f, pdf)` over `check.samples`
+/// non-delta samples; NaN if any comparison is NaN.
+#[must_use]
+pub fn sample_consistency<B: Bxdf<Spectrum = f32> + ?Sized>(
+    bxdf: &B,
+    wo: Vec3,
+    check: &BxdfCheck,
+) -> (f64, f64) {
+    let rel = |a: f32, b: f32| {
+        let (a, b) = (f64::from(a), f64::from(b));
+        if a == b {
+            0.0
+        } else {
+            (a - b).abs() / a.abs().max(b.abs())
+        }
+    };
+    let mut rng = Pcg32::new(check.seed, STREAM ^ 2);
+    let (mut worst_f, mut worst_pdf) = (0.0_f64, 0.0_f64);
+    for _ in 0..check.samples {
+        let u = rng.next_vec2();
+        let uc = rng.next_f32();
+        if let Some(s) = bxdf.sample(wo, u, uc).filter(|s| !s.is_specular()) {
+            // `f64::max` drops NaN; keep it, so that a NaN can only make things worse.
+            let keep = |worst: f64, x: f64| {
+                if x.is_nan() || worst.is_nan() {
+                    f64::NAN
+                } else {
+                    worst.max(x)
+                }
+            };
+            worst_f = keep(worst_f, rel(s.f, bxdf.eval(wo, s.wi)));
+            worst_pdf = keep(worst_pdf, rel(s.pdf, bxdf.pdf(wo, s.wi)));
         }
     }
-    0.5 * (lo + hi)
+    (worst_f, worst_pdf)
+}
+
+/// One reciprocity measurement: the two sides of the (generalised) reciprocity relation for
+/// a pair of directions, and how far apart f32 round-off alone can put them.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ReciprocityPair {
+    /// `f(wo, wi) / η_o²`.
+    pub forward: f64,
+    /// `f(wi, wo) / η_i²`.
+    pub backward: f64,
+    /// The round-off allowance: the largest change of either side when `wo` or `wi` moves by
+    /// a few ulps (four perturbations of `4 ε` radians each), twice, plus an absolute
+    /// [`SUBNORMAL_FLOOR`]. An ill-conditioned pair (a microfacet seen edge-on) gets a large
+    /// allowance; a well-conditioned one, almost none.
+    pub round_off: f64,
+}
+
+impl ReciprocityPair {
+    /// `|forward − backward| / max(|forward|, |backward|)`, zero when both are zero.
+    #[must_use]
+    pub fn relative_error(&self) -> f64 {
+        let (a, b) = (self.forward, self.backward);
+        if a == b {
+            0.0
+        } else {
+            (a - b).abs() / a.abs().max(b.abs())
+        }
+    }
+
+    /// True when the sides agree within `rel_tol` relative error plus the round-off
+    /// allowance.
+    #[must_use]
+    pub fn holds(&self, rel_tol: f64) -> bool {
+        let (a, b) = (self.forward, self.backward);
+        (a - b).abs() <= rel_tol * a.abs().max(b.abs()) + self.round_off
+    }
+}
+
+/// Values this small are products whose intermediate factors went below
+/// `f32::MIN_POSITIVE` and lost their relative precision (a far tail of `D`); reciprocity is
+/// not checked below it.
+pub const SUBNORMAL_FLOOR: f64 = 1e-30;
+
+/// Measures reciprocity for one pair: `f(wo, wi)/η_o²` against `f(wi, wo)/η_i²`, where
+/// `η_o`, `η_i` are the indices on the sides of `wo` and `wi` (`1` above the surface, `eta`
+/// below). With `eta = 1`, or both directions on one side, this is plain Helmholtz
+/// reciprocity; across an interface it is the generalised form for radiance transport (Veach
+/// 1997, eq. 5.12). For a model in importance mode pass `1/η`.
+#[must_use]
+pub fn reciprocity_pair<B: Bxdf<Spectrum = f32> + ?Sized>(
+    bxdf: &B,
+    wo: Vec3,
+    wi: Vec3,
+    eta: f32,
+) -> ReciprocityPair {
+    let side = |w: Vec3| if w.z >= 0.0 { 1.0 } else { f64::from(eta) };
+    let forward = |a: Vec3, b: Vec3| f64::from(bxdf.eval(a, b)) / (side(a) * side(a));
+    let (a, b) = (forward(wo, wi), forward(wi, wo));
+    let mut spread = 0.0_f64;
+    let eps = 4.0 * f32::EPSILON;
+    for k in 0..4 {
+        let (po, pi) = (nudge(wo, k, eps), nudge(wi, k, eps));
+        spread = spread
+            .max((forward(po, wi) - a).abs())
+            .max((forward(wo, pi) - a).abs())
+            .max((forward(wi, po) - b).abs())
+            .max((forward(pi, wo) - b).abs());
+    }
+    ReciprocityPair {
+        forward: a,
+        backward: b,
+        round_off: 2.0 * spread + SUBNORMAL_FLOOR,
+    }
+}
+
+/// `w` turned by `eps` radians toward one of four tangent directions (`k` = 0…3).
+fn nudge(w: Vec3, k: usize, eps: f32) -> Vec3 {
+    let frame = crate::Frame::from_normal(w);
+    let t = match k {
+        0 => frame.x,
+        1 => -frame.x,
+        2 => frame.y,
+        _ => -frame.y,
+    };
+    (w + t * eps).normalize()
 }
 
 /// A direction for the positivity check: uniform on the sphere (half the draws), within
@@ -195,7 +316,7 @@ pub fn positivity<B: Bxdf<Spectrum = f32> + ?Sized>(bxdf: &B, config: &Config) -
 
 /// **Reciprocity**: over `config.pairs` random pairs, `f(wo, wi)/η_o² = f(wi, wo)/η_i²`
 /// within `config.reciprocity_tolerance` plus each pair's round-off allowance (see
-/// [`ReciprocityPair`](super::ReciprocityPair)); `config.eta` gives the generalised form. The
+/// [`ReciprocityPair`]); `config.eta` gives the generalised form. The
 /// figure is the largest relative error over the well-conditioned pairs.
 #[must_use]
 pub fn reciprocity<B: Bxdf<Spectrum = f32> + ?Sized>(bxdf: &B, config: &Config) -> LawReport {

@@ -1,30 +1,31 @@
-//! Checks of a microfacet distribution: normalisation, projected area, visible normals, and
-//! its samplers.
+//! The laws of a microfacet distribution, measured, reported and checked: `D`
+//! normalisation, projected area, visible-normal normalisation, and the sampler against its
+//! density (chi-square); [`check_ndf`] runs them all.
 //!
 //! The integrals are estimated by importance sampling with a proposal that knows nothing of
-//! the distribution under test: directions uniform on the hemisphere, *stretched* by the
-//! caller's `stretch = (sx, sy)` (usually the distribution's widths), so that the proposal
-//! has the right scale for a narrow lobe and heavier tails than any common distribution.
-//! A check that used the distribution's own sampler would be circular.
+//! the distribution under test ([`integrate_hemisphere`]): directions uniform on the
+//! hemisphere, *stretched* by the caller's `stretch = (sx, sy)` (usually the distribution's
+//! widths), so that the proposal has the right scale for a narrow lobe and heavier tails than
+//! any common distribution. A check that used the distribution's own sampler would be
+//! circular.
 //!
 //! For the same reason the sampler checks run the chi-square test on *unstretched*
 //! normals, where a narrow lobe covers many bins instead of one.
 
-use super::{Accumulator, Chi2Config, Chi2Report, Estimate, Pcg32, chi2_sphere_rng};
+use super::report::{Law, LawReport, Report};
 use crate::microfacet::NormalDistribution;
-use crate::sampling::{cosine_hemisphere, uniform_hemisphere};
-use core::f64::consts::{PI, TAU};
+use crate::verify::stats::{
+    Chi2Config, Chi2Report, Estimate, chi2_sphere_rng, integrate_hemisphere, sidak,
+    stretch_direction as stretch, two_sided_quantile,
+};
 use glam::{Vec2, Vec3};
-
-/// The stream of the proposal's generator, apart from the chi-square test's.
-const STREAM: u64 = 0x006e_6466;
 
 /// Settings of the integral checks in this module.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct NdfCheck {
     /// Monte Carlo samples. Default 200 000.
     pub samples: usize,
-    /// Seed of the proposal's [`Pcg32`]. Default 1.
+    /// Seed of the proposal's [`Pcg32`](crate::verify::Pcg32). Default 1.
     pub seed: u64,
     /// The proposal's stretch `(sx, sy)`: about the distribution's widths `(αx, αy)`.
     /// Default `(1, 1)`.
@@ -51,47 +52,12 @@ impl NdfCheck {
         }
     }
 
-    /// The Monte Carlo estimate of `∫ f(m) dωm` over the upper hemisphere.
-    ///
-    /// The proposal is a defensive mixture (Hesterberg 1995) of three densities in equal
-    /// parts: cosine-weighted and uniform directions stretched by [`stretch`](Self::stretch),
-    /// and uniform directions unstretched. The stretched parts follow a lobe of width
-    /// `stretch`; the unstretched part bounds the weights of a distribution whose tails are
-    /// wider than its width suggests (GTR with a small `γ`).
+    /// The Monte Carlo estimate of `∫ f(m) dωm` over the upper hemisphere with this budget
+    /// and proposal: [`integrate_hemisphere`].
     #[must_use]
     pub fn integrate(&self, f: impl Fn(Vec3) -> f64) -> Estimate {
-        let mut rng = Pcg32::new(self.seed, STREAM);
-        let mut acc = Accumulator::new();
-        for i in 0..self.samples {
-            let u = rng.next_vec2();
-            let m = match i % 3 {
-                0 => stretch(cosine_hemisphere(u), self.stretch),
-                1 => stretch(uniform_hemisphere(u), self.stretch),
-                _ => uniform_hemisphere(u),
-            };
-            let pdf = self.proposal_pdf(m);
-            acc.push(if pdf > 0.0 { f(m) / pdf } else { 0.0 });
-        }
-        acc.finish()
+        integrate_hemisphere(f, self.samples, self.seed, self.stretch)
     }
-
-    /// The density of [`integrate`](Self::integrate)'s proposal at `m`, in solid angle.
-    fn proposal_pdf(&self, m: Vec3) -> f64 {
-        let (sx, sy) = (f64::from(self.stretch.x), f64::from(self.stretch.y));
-        // h = normalize(M⁻¹ m) is the unstretched direction; dω_h/dω_m = 1 / (sx sy |M⁻¹ m|³).
-        let (x, y, z) = (f64::from(m.x) / sx, f64::from(m.y) / sy, f64::from(m.z));
-        let len = (x * x + y * y + z * z).sqrt();
-        let hz = z / len;
-        let jacobian = 1.0 / (sx * sy * len * len * len);
-        let stretched_cos = hz.max(0.0) / PI * jacobian;
-        let stretched_uniform = jacobian / TAU;
-        (stretched_cos + stretched_uniform + 1.0 / TAU) / 3.0
-    }
-}
-
-/// `normalize(sx hx, sy hy, hz)`.
-fn stretch(h: Vec3, s: Vec2) -> Vec3 {
-    Vec3::new(s.x * h.x, s.y * h.y, h.z).normalize_or(Vec3::Z)
 }
 
 /// The density of `normalize(M h)`, `M = diag(sx, sy, 1)`, for `h` of density `pdf_h`:
@@ -230,8 +196,7 @@ pub fn check_ndf<D: NormalDistribution + ?Sized>(
     name: &str,
     dist: &D,
     config: &NdfConfig,
-) -> super::Report {
-    use super::{Law, LawReport, sidak, two_sided_quantile};
+) -> Report {
     use std::format;
     let n = config.thetas.len().max(1);
     let k1 = two_sided_quantile(config.significance / 4.0);
@@ -325,7 +290,7 @@ pub fn check_ndf<D: NormalDistribution + ?Sized>(
         budget: format!("{} samples × {n} angles", config.chi2_samples),
         detail: failure.unwrap_or_else(|| format!("smallest at θ = {}°", min_p.1)),
     };
-    super::Report {
+    Report {
         name: name.into(),
         laws: std::vec![norm, area, visible, sampling],
     }
