@@ -21,8 +21,7 @@ use lobe::fresnel::{self, Fresnel, Schlick};
 use lobe::microfacet::{Ggx, Masking, NormalDistribution};
 use lobe::sampling::{cosine_hemisphere, cosine_hemisphere_pdf};
 use lobe::verify::{
-    Chi2Config, Config, Law, NdfCheck, NdfConfig, Report, albedo, check_bxdf, check_ndf, chi2_bxdf,
-    sidak,
+    Chi2Config, Config, Law, Report, albedo, check_bxdf, check_ndf, chi2_bxdf, sidak,
 };
 use lobe::{Alpha, Eta, Vec2, Vec3};
 
@@ -51,15 +50,13 @@ fn config() -> Config {
 }
 
 /// The distributions' budget, with the proposal stretched to their width.
-fn ndf_config(alpha: f32) -> NdfConfig {
-    NdfConfig {
-        check: NdfCheck {
-            samples: 60_000,
-            ..NdfCheck::stretched(alpha, alpha)
-        },
+fn ndf_config(alpha: f32) -> Config {
+    Config {
+        integral_samples: 60_000,
+        stretch: Vec2::splat(alpha),
         chi2_samples: 50_000,
         significance: sidak(0.01, RUNS),
-        ..NdfConfig::default()
+        ..Config::default()
     }
 }
 

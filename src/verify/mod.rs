@@ -6,23 +6,39 @@
 //! tests.
 //!
 //! A law is a claim about an integral or an identity, so a check is a measurement, not a
-//! comparison against a hand-picked epsilon:
+//! comparison against a hand-picked epsilon. The module has two rooms (its items are all
+//! public here, at `lobe::verify::…`):
+//!
+//! **The laws**, one subject a file, each measuring, reporting and checking its subject:
+//!
+//! * [`check_bxdf`] runs every law of a BSDF that applies: [`positivity`], [`reciprocity`],
+//!   [`energy_bound`] (the directional [`albedo`] by two independent estimators,
+//!   [`albedo_sampled`] and [`albedo_cosine`]), [`sampling_chi2`] ([`chi2_bxdf`] per viewer
+//!   direction) and [`consistency`] ([`sample_consistency`]).
+//! * [`check_ndf`] runs the laws of a microfacet distribution: [`d_normalization`],
+//!   [`projected_area`], [`visible_normalization`] and its sampler ([`chi2_normals`]).
+//! * One [`Config`] sets every check's budget, seed, significance, viewer directions and
+//!   tolerances; each returns a [`LawReport`] (a [`Report`] for a whole model) that says
+//!   which [`Law`] held, the measured figure with its uncertainty, and where the worst case
+//!   was.
+//!
+//! **The statistics** they measure with, public because a check built outside the crate
+//! needs them too:
 //!
 //! * [`Estimate`] / [`Accumulator`]: a Monte Carlo mean with its standard error, accumulated
 //!   in `f64`. Assert with [`Estimate::within`]`(target, k)` — "within `k` standard
 //!   errors" — or read [`Estimate::z_score`].
 //! * [`chi2_sphere`]: Pearson's chi-square goodness-of-fit test of a direction sampler
-//!   against its solid-angle density, with low-count bins pooled and outright failures
-//!   (samples where the density is zero, invalid samples or densities) reported.
-//! * [`d_normalization`], [`projected_area`], [`visible_normalization`], [`chi2_normals`]:
-//!   the laws of a microfacet distribution ([`NdfCheck`] sets their budget).
-//! * [`albedo_sampled`], [`albedo_cosine`], [`chi2_bxdf`], [`sample_consistency`],
-//!   [`reciprocity`]: the laws of a BSDF ([`BxdfCheck`] sets their budget).
+//!   against its solid-angle density ([`Chi2Config`] sets its bins and budget), with
+//!   low-count bins pooled and outright failures (samples where the density is zero,
+//!   invalid samples or densities) reported.
+//! * [`integrate_hemisphere`]: a Monte Carlo integral over the hemisphere whose proposal
+//!   follows a lobe of a given width.
 //! * [`sidak`]: the per-test significance for a family of tests, so that a file of `n`
-//!   chi-square tests keeps its overall false-rejection rate.
+//!   tests keeps its overall false-rejection rate; [`two_sided_quantile`]: the `k` of
+//!   "within `k` standard errors" at a significance.
 //! * [`Pcg32`], [`gamma_p`], [`gamma_q`], [`ln_gamma`], [`chi2_survival`]: the generator
-//!   and special functions underneath, public because checks built on this module need
-//!   them too.
+//!   and the special functions underneath.
 //!
 //! **Every test is seeded and reproducible.** Random numbers come from [`Pcg32`], whose
 //! sequence for a given seed is pinned by a test, so a check that passes once passes on
@@ -102,11 +118,10 @@ mod stats;
 pub mod strategies;
 
 pub use laws::{
-    Albedo, BxdfCheck, Config, Law, LawReport, NdfCheck, NdfConfig, ReciprocityPair, Report,
-    SUBNORMAL_FLOOR, albedo, albedo_cosine, albedo_sampled, check_bxdf, check_ndf, chi2_bxdf,
-    chi2_normals, consistency, d_normalization, energy_bound, positivity, projected_area,
-    projected_area_masked, reciprocity, reciprocity_pair, sample_consistency, sampling_chi2,
-    visible_normalization,
+    Albedo, BxdfCheck, Config, Law, LawReport, ReciprocityPair, Report, SUBNORMAL_FLOOR, albedo,
+    albedo_cosine, albedo_sampled, check_bxdf, check_ndf, chi2_bxdf, chi2_normals, consistency,
+    d_normalization, energy_bound, positivity, projected_area, projected_area_masked, reciprocity,
+    reciprocity_pair, sample_consistency, sampling_chi2, visible_normalization,
 };
 pub use stats::{
     Accumulator, Chi2Bin, Chi2Config, Chi2Report, Chi2Residual, Estimate, Pcg32, chi2_sphere,

@@ -29,36 +29,19 @@ const F32_ROUND_OFF: f64 = 1e-6;
 /// The stream of these checks' generator, apart from the chi-square test's.
 const STREAM: u64 = 0x0062_7364;
 
-/// Settings of the Monte Carlo checks in this module.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct BxdfCheck {
-    /// Samples per estimate. Default 200 000.
-    pub samples: usize,
-    /// Seed of the [`Pcg32`] that draws the random numbers. Default 1.
-    pub seed: u64,
-}
-
-impl Default for BxdfCheck {
-    fn default() -> Self {
-        Self {
-            samples: 200_000,
-            seed: 1,
-        }
-    }
-}
-
 /// The directional albedo `∫ f(wo, wi) |cos θi| dωi` estimated with the model's own sampler:
 /// the mean of [`BxdfSample::weight`](crate::bxdf::BxdfSample::weight), a failed sample
 /// counting as zero. Includes delta lobes.
 #[must_use]
-pub fn albedo_sampled<B: Bxdf<Spectrum = f32> + ?Sized>(
-    bxdf: &B,
-    wo: Vec3,
-    check: &BxdfCheck,
-) -> Estimate {
-    let mut rng = Pcg32::new(check.seed, STREAM);
+pub fn albedo_sampled<'c, B, C>(bxdf: &B, wo: Vec3, config: &'c C) -> Estimate
+where
+    B: Bxdf<Spectrum = f32> + ?Sized,
+    &'c C: Into<Config>,
+{
+    let config = config.into();
+    let mut rng = Pcg32::new(config.seed, STREAM);
     let mut acc = Accumulator::new();
-    for _ in 0..check.samples {
+    for _ in 0..config.albedo_samples {
         let u = rng.next_vec2();
         let uc = rng.next_f32();
         let w = bxdf
@@ -73,15 +56,16 @@ pub fn albedo_sampled<B: Bxdf<Spectrum = f32> + ?Sized>(
 /// distributed over the upper hemisphere, and also over the lower one (each with probability
 /// ½) when the model transmits. Misses delta lobes, which have no density.
 #[must_use]
-pub fn albedo_cosine<B: Bxdf<Spectrum = f32> + ?Sized>(
-    bxdf: &B,
-    wo: Vec3,
-    check: &BxdfCheck,
-) -> Estimate {
+pub fn albedo_cosine<'c, B, C>(bxdf: &B, wo: Vec3, config: &'c C) -> Estimate
+where
+    B: Bxdf<Spectrum = f32> + ?Sized,
+    &'c C: Into<Config>,
+{
+    let config = config.into();
     let both_sides = bxdf.lobes().is_transmissive();
-    let mut rng = Pcg32::new(check.seed, STREAM ^ 1);
+    let mut rng = Pcg32::new(config.seed, STREAM ^ 1);
     let mut acc = Accumulator::new();
-    for _ in 0..check.samples {
+    for _ in 0..config.albedo_samples {
         let mut wi = cosine_hemisphere(rng.next_vec2());
         let mut pdf = f64::from(cosine_hemisphere_pdf(wi.z));
         if both_sides {
@@ -118,14 +102,15 @@ pub fn chi2_bxdf<B: Bxdf + ?Sized>(bxdf: &B, wo: Vec3, config: &Chi2Config) -> C
 }
 
 /// How far [`Bxdf::sample`]'s `f` and `pdf` are from [`Bxdf::eval`] and [`Bxdf::pdf`] at the
-/// sampled direction: the largest relative differences `(f, pdf)` over `check.samples`
+/// sampled direction: the largest relative differences `(f, pdf)` over `config.consistency_samples`
 /// non-delta samples; NaN if any comparison is NaN.
 #[must_use]
-pub fn sample_consistency<B: Bxdf<Spectrum = f32> + ?Sized>(
-    bxdf: &B,
-    wo: Vec3,
-    check: &BxdfCheck,
-) -> (f64, f64) {
+pub fn sample_consistency<'c, B, C>(bxdf: &B, wo: Vec3, config: &'c C) -> (f64, f64)
+where
+    B: Bxdf<Spectrum = f32> + ?Sized,
+    &'c C: Into<Config>,
+{
+    let config = config.into();
     let rel = |a: f32, b: f32| {
         let (a, b) = (f64::from(a), f64::from(b));
         if a == b {
@@ -134,9 +119,9 @@ pub fn sample_consistency<B: Bxdf<Spectrum = f32> + ?Sized>(
             (a - b).abs() / a.abs().max(b.abs())
         }
     };
-    let mut rng = Pcg32::new(check.seed, STREAM ^ 2);
+    let mut rng = Pcg32::new(config.seed, STREAM ^ 2);
     let (mut worst_f, mut worst_pdf) = (0.0_f64, 0.0_f64);
-    for _ in 0..check.samples {
+    for _ in 0..config.consistency_samples {
         let u = rng.next_vec2();
         let uc = rng.next_f32();
         if let Some(s) = bxdf.sample(wo, u, uc).filter(|s| !s.is_specular()) {
@@ -378,10 +363,9 @@ pub struct Albedo {
 /// a model without delta lobes, by cosine sampling.
 #[must_use]
 pub fn albedo<B: Bxdf<Spectrum = f32> + ?Sized>(bxdf: &B, wo: Vec3, config: &Config) -> Albedo {
-    let check = config.bxdf_check(config.albedo_samples);
     Albedo {
-        sampled: albedo_sampled(bxdf, wo, &check),
-        cosine: (!bxdf.lobes().is_specular()).then(|| albedo_cosine(bxdf, wo, &check)),
+        sampled: albedo_sampled(bxdf, wo, config),
+        cosine: (!bxdf.lobes().is_specular()).then(|| albedo_cosine(bxdf, wo, config)),
     }
 }
 
@@ -516,10 +500,9 @@ pub fn sampling_chi2<B: Bxdf + ?Sized>(bxdf: &B, config: &Config) -> LawReport {
 /// difference.
 #[must_use]
 pub fn consistency<B: Bxdf<Spectrum = f32> + ?Sized>(bxdf: &B, config: &Config) -> LawReport {
-    let check = config.bxdf_check(config.consistency_samples);
     let mut worst = (0.0_f64, Vec3::Z);
     for wo in config.viewer_directions(bxdf) {
-        let (f, p) = sample_consistency(bxdf, wo, &check);
+        let (f, p) = sample_consistency(bxdf, wo, config);
         // `f64::max` would drop a NaN: keep it, so that it fails.
         let gap = if f.is_nan() || p.is_nan() {
             f64::NAN

@@ -12,6 +12,7 @@
 //! For the same reason the sampler checks run the chi-square test on *unstretched*
 //! normals, where a narrow lobe covers many bins instead of one.
 
+use super::config::Config;
 use super::report::{Law, LawReport, Report};
 use crate::microfacet::NormalDistribution;
 use crate::verify::stats::{
@@ -19,46 +20,8 @@ use crate::verify::stats::{
     stretch_direction as stretch, two_sided_quantile,
 };
 use glam::{Vec2, Vec3};
-
-/// Settings of the integral checks in this module.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct NdfCheck {
-    /// Monte Carlo samples. Default 200 000.
-    pub samples: usize,
-    /// Seed of the proposal's [`Pcg32`](crate::verify::Pcg32). Default 1.
-    pub seed: u64,
-    /// The proposal's stretch `(sx, sy)`: about the distribution's widths `(αx, αy)`.
-    /// Default `(1, 1)`.
-    pub stretch: Vec2,
-}
-
-impl Default for NdfCheck {
-    fn default() -> Self {
-        Self {
-            samples: 200_000,
-            seed: 1,
-            stretch: Vec2::ONE,
-        }
-    }
-}
-
-impl NdfCheck {
-    /// The default settings with the proposal stretched by `(sx, sy)`.
-    #[must_use]
-    pub fn stretched(sx: f32, sy: f32) -> Self {
-        Self {
-            stretch: Vec2::new(sx, sy),
-            ..Self::default()
-        }
-    }
-
-    /// The Monte Carlo estimate of `∫ f(m) dωm` over the upper hemisphere with this budget
-    /// and proposal: [`integrate_hemisphere`].
-    #[must_use]
-    pub fn integrate(&self, f: impl Fn(Vec3) -> f64) -> Estimate {
-        integrate_hemisphere(f, self.samples, self.seed, self.stretch)
-    }
-}
+use std::format;
+use std::vec;
 
 /// The density of `normalize(M h)`, `M = diag(sx, sy, 1)`, for `h` of density `pdf_h`:
 /// `pdf_h · |M h|³ / (sx sy)` (the Jacobian of a linear map of directions).
@@ -69,10 +32,17 @@ fn stretched_density(h: Vec3, s: Vec2, pdf_h: f64) -> f64 {
     pdf_h * len * len * len / (sx * sy)
 }
 
-/// `∫ D(m) cos θm dωm`, which must be `1` (Heitz 2014, eq. 4).
+/// `∫ f(m) dωm` over the upper hemisphere with `config`'s integral budget, seed and stretch.
+fn integrate(config: &Config, f: impl Fn(Vec3) -> f64) -> Estimate {
+    integrate_hemisphere(f, config.integral_samples, config.seed, config.stretch)
+}
+
+/// `∫ D(m) cos θm dωm`, which must be `1` (Heitz 2014, eq. 4), estimated with
+/// `config.integral_samples` samples of [`integrate_hemisphere`]'s proposal stretched by
+/// `config.stretch`.
 #[must_use]
-pub fn d_normalization<D: NormalDistribution + ?Sized>(dist: &D, check: &NdfCheck) -> Estimate {
-    check.integrate(|m| f64::from(dist.d(m)) * f64::from(m.z))
+pub fn d_normalization<D: NormalDistribution + ?Sized>(dist: &D, config: &Config) -> Estimate {
+    integrate(config, |m| f64::from(dist.d(m)) * f64::from(m.z))
 }
 
 /// `∫ G1(wo) max(0, wo·m) D(m) dωm`, which must be `cos θo` for a masking function that
@@ -81,10 +51,10 @@ pub fn d_normalization<D: NormalDistribution + ?Sized>(dist: &D, check: &NdfChec
 pub fn projected_area<D: NormalDistribution + ?Sized>(
     dist: &D,
     wo: Vec3,
-    check: &NdfCheck,
+    config: &Config,
 ) -> Estimate {
     let g1 = f64::from(dist.g1(wo));
-    projected_area_masked(dist, wo, |_| g1, check)
+    projected_area_masked(dist, wo, |_| g1, config)
 }
 
 /// [`projected_area`] with a masking function `g1(m)` of the microfacet normal, for masking
@@ -94,9 +64,9 @@ pub fn projected_area_masked<D: NormalDistribution + ?Sized>(
     dist: &D,
     wo: Vec3,
     g1: impl Fn(Vec3) -> f64,
-    check: &NdfCheck,
+    config: &Config,
 ) -> Estimate {
-    check.integrate(|m| {
+    integrate(config, |m| {
         let wm = f64::from(wo.dot(m));
         if wm > 0.0 {
             g1(m) * wm * f64::from(dist.d(m))
@@ -111,9 +81,9 @@ pub fn projected_area_masked<D: NormalDistribution + ?Sized>(
 pub fn visible_normalization<D: NormalDistribution + ?Sized>(
     dist: &D,
     w: Vec3,
-    check: &NdfCheck,
+    config: &Config,
 ) -> Estimate {
-    check.integrate(|m| f64::from(dist.d_visible(w, m)))
+    integrate(config, |m| f64::from(dist.d_visible(w, m)))
 }
 
 /// The chi-square test of a sampler of microfacet normals against its density, run on the
@@ -148,70 +118,38 @@ pub fn chi2_normals(
     )
 }
 
-/// Settings of [`check_ndf`].
-#[derive(Clone, Debug, PartialEq)]
-pub struct NdfConfig {
-    /// The integral checks' budget and proposal (set its `stretch` to the widths).
-    pub check: NdfCheck,
-    /// Viewer angles, in degrees, of the projected-area, visible-normal and sampling checks.
-    /// Default `{0, 30, 60, 85, 89}`.
-    pub thetas: std::vec::Vec<f32>,
-    /// Samples per chi-square test. Default 200 000.
-    pub chi2_samples: usize,
-    /// The chance of failing a correct distribution, for the whole run. Default 0.01.
-    pub significance: f64,
-}
-
-impl Default for NdfConfig {
-    fn default() -> Self {
-        Self {
-            check: NdfCheck::default(),
-            thetas: std::vec![0.0, 30.0, 60.0, 85.0, 89.0],
-            chi2_samples: 200_000,
-            significance: 0.01,
-        }
-    }
-}
-
 /// Runs the laws of a microfacet distribution as reports: `D` normalisation, projected area
 /// (the figure is the largest `|∫ … / cos θo − 1|` over the angles), visible normalisation
 /// (largest `|∫ D_w − 1|`) and the chi-square test of [`NormalDistribution::sample`] against
 /// [`NormalDistribution::pdf`], each Šidák-corrected over its angles.
 ///
+/// It reads `config.integral_samples`, `chi2_samples`, `seed`, `significance`, `directions`
+/// (each above the surface; empty for the default angles) and `stretch` (set it to the
+/// distribution's widths).
+///
 /// ```
 /// use lobe::microfacet::Ggx;
-/// use lobe::verify::{check_ndf, NdfCheck, NdfConfig};
-/// use lobe::Alpha;
-/// let config = NdfConfig {
-///     check: NdfCheck { samples: 50_000, ..NdfCheck::stretched(0.3, 0.3) },
+/// use lobe::verify::{check_ndf, Config};
+/// use lobe::{Alpha, Vec2};
+/// let config = Config {
+///     integral_samples: 50_000,
 ///     chi2_samples: 50_000,
-///     ..NdfConfig::default()
+///     stretch: Vec2::splat(0.3),
+///     ..Config::default()
 /// };
 /// let report = check_ndf("GGX", &Ggx::isotropic(Alpha::new(0.3)?), &config);
 /// assert!(report.passed(), "{report}");
 /// # Ok::<(), lobe::ParamError>(())
 /// ```
 #[must_use]
-pub fn check_ndf<D: NormalDistribution + ?Sized>(
-    name: &str,
-    dist: &D,
-    config: &NdfConfig,
-) -> Report {
-    use std::format;
-    let n = config.thetas.len().max(1);
+pub fn check_ndf<D: NormalDistribution + ?Sized>(name: &str, dist: &D, config: &Config) -> Report {
+    let dirs = config.distribution_directions();
+    let n = dirs.len().max(1);
     let k1 = two_sided_quantile(config.significance / 4.0);
     let k = two_sided_quantile(sidak(config.significance / 4.0, n));
-    let dirs: std::vec::Vec<(f32, Vec3)> = config
-        .thetas
-        .iter()
-        .map(|&t| {
-            let (s, c) = t.to_radians().sin_cos();
-            (t, Vec3::new(s * 0.7f32.cos(), s * 0.7f32.sin(), c))
-        })
-        .collect();
-    let budget = format!("{} samples", config.check.samples);
+    let budget = format!("{} samples", config.integral_samples);
 
-    let e = d_normalization(dist, &config.check);
+    let e = d_normalization(dist, config);
     let norm = LawReport {
         law: Law::DNormalization,
         passed: e.within(1.0, k1),
@@ -236,7 +174,7 @@ pub fn check_ndf<D: NormalDistribution + ?Sized>(
         }
         out
     };
-    let (dev, sd, at, ok) = worst(&|w| (projected_area(dist, w, &config.check), f64::from(w.z)));
+    let (dev, sd, at, ok) = worst(&|w| (projected_area(dist, w, config), f64::from(w.z)));
     let area = LawReport {
         law: Law::ProjectedArea,
         passed: ok,
@@ -246,7 +184,7 @@ pub fn check_ndf<D: NormalDistribution + ?Sized>(
         budget: format!("{budget} × {n} angles"),
         detail: format!("largest at θo = {at}°, k = {k:.2}"),
     };
-    let (dev, sd, at, ok) = worst(&|w| (visible_normalization(dist, w, &config.check), 1.0));
+    let (dev, sd, at, ok) = worst(&|w| (visible_normalization(dist, w, config), 1.0));
     let visible = LawReport {
         law: Law::VisibleNormalization,
         passed: ok,
@@ -263,7 +201,7 @@ pub fn check_ndf<D: NormalDistribution + ?Sized>(
     for (i, &(t, w)) in dirs.iter().enumerate() {
         let chi = Chi2Config {
             samples: config.chi2_samples,
-            seed: config.check.seed.wrapping_add(i as u64),
+            seed: config.seed.wrapping_add(i as u64),
             significance,
             ..Chi2Config::default()
         };
@@ -271,7 +209,7 @@ pub fn check_ndf<D: NormalDistribution + ?Sized>(
         let r = chi2_normals(
             |u| dist.sample(&view, u),
             |m| f64::from(dist.pdf(&view, m, dist.d(m))),
-            config.check.stretch,
+            config.stretch,
             &chi,
         );
         if r.p_value < min_p.0 {
@@ -292,6 +230,6 @@ pub fn check_ndf<D: NormalDistribution + ?Sized>(
     };
     Report {
         name: name.into(),
-        laws: std::vec![norm, area, visible, sampling],
+        laws: vec![norm, area, visible, sampling],
     }
 }

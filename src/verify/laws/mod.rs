@@ -16,13 +16,13 @@ mod distribution;
 mod report;
 
 pub use bxdf::{
-    Albedo, BxdfCheck, ReciprocityPair, SUBNORMAL_FLOOR, albedo, albedo_cosine, albedo_sampled,
-    check_bxdf, chi2_bxdf, consistency, energy_bound, positivity, reciprocity, reciprocity_pair,
+    Albedo, ReciprocityPair, SUBNORMAL_FLOOR, albedo, albedo_cosine, albedo_sampled, check_bxdf,
+    chi2_bxdf, consistency, energy_bound, positivity, reciprocity, reciprocity_pair,
     sample_consistency, sampling_chi2,
 };
-pub use config::Config;
+pub use config::{BxdfCheck, Config};
 pub use distribution::{
-    NdfCheck, NdfConfig, check_ndf, chi2_normals, d_normalization, projected_area,
-    projected_area_masked, visible_normalization,
+    check_ndf, chi2_normals, d_normalization, projected_area, projected_area_masked,
+    visible_normalization,
 };
 pub use report::{Law, LawReport, Report};
