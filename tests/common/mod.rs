@@ -20,11 +20,11 @@ pub fn proptest_config(cases: u32) -> Config {
 }
 
 /// The two-sided normal quantile `k` such that each of `n_tests` estimates falls outside
-/// `±k σ` with probability `sidak(family_alpha, n_tests)`: the Šidák-corrected "k sigma".
+/// `±k σ` with probability `sidak(family_alpha, n_tests)`: the Šidák-corrected "k sigma",
+/// by the harness's own [`two_sided_quantile`](lobe::verify::two_sided_quantile).
 pub fn k_sigma(family_alpha: f64, n_tests: usize) -> f64 {
-    let per_test = lobe::verify::sidak(family_alpha, n_tests);
-    // P(|Z| > k) = per_test  ⇔  k = √2 erf⁻¹(1 − per_test).
-    std::f64::consts::SQRT_2 * f64::from(lobe::math::erf_inv((1.0 - per_test) as f32))
+    use lobe::verify::{sidak, two_sided_quantile};
+    two_sided_quantile(sidak(family_alpha, n_tests))
 }
 
 /// The unit direction at polar angle `theta_deg` and azimuth `phi` (radians).
