@@ -14,7 +14,10 @@
 //! * [`check_bxdf`] runs every law of a BSDF that applies: [`positivity`], [`reciprocity`],
 //!   [`energy_bound`] (the directional [`albedo`] by two independent estimators,
 //!   [`albedo_sampled`] and [`albedo_cosine`]), [`sampling_chi2`] ([`chi2_bxdf`] per viewer
-//!   direction) and [`consistency`] ([`sample_consistency`]).
+//!   direction) and [`consistency`] ([`sample_consistency`]). A model of any
+//!   [`Spectrum`](crate::Spectrum) — `f32`, RGB `Vec3`, four wavelengths `Vec4` — is checked
+//!   per channel, each report naming its worst channel; [`Channel`] views one channel as a
+//!   monochrome model for the measurements.
 //! * [`check_ndf`] runs the laws of a microfacet distribution: [`d_normalization`],
 //!   [`projected_area`], [`visible_normalization`] and its sampler ([`chi2_normals`]).
 //! * One [`Config`] sets every check's budget, seed, significance, viewer directions and
@@ -49,23 +52,25 @@
 //!
 //! ## Verifying your own BRDF
 //!
-//! A renderer's own model implements [`Bxdf`](crate::bxdf::Bxdf); then three lines in its tests
-//! run every law that applies and say, on failure, which law failed and where:
+//! A renderer's own model implements [`Bxdf`](crate::bxdf::Bxdf), in whatever spectrum it
+//! shades with (here RGB); then three lines in its tests run every law that applies, on
+//! every channel, and say, on failure, which law failed, in which channel and where:
 //!
 //! ```
 //! use lobe::bxdf::{Bxdf, BxdfSample, Lobes};
 //! use lobe::sampling::{cosine_hemisphere, cosine_hemisphere_pdf};
 //! use lobe::{Vec2, Vec3};
 //!
-//! /// A renderer's own diffuse BRDF, 90% reflectance.
+//! /// A renderer's own diffuse BRDF, an orange of reflectance (0.9, 0.6, 0.3).
 //! struct MyDiffuse;
 //!
 //! impl Bxdf for MyDiffuse {
-//!     type Spectrum = f32;
-//!     fn eval(&self, wo: Vec3, wi: Vec3) -> f32 {
-//!         if wo.z > 0.0 && wi.z > 0.0 { 0.9 / std::f32::consts::PI } else { 0.0 }
+//!     type Spectrum = Vec3;
+//!     fn eval(&self, wo: Vec3, wi: Vec3) -> Vec3 {
+//!         let rho = Vec3::new(0.9, 0.6, 0.3);
+//!         if wo.z > 0.0 && wi.z > 0.0 { rho / std::f32::consts::PI } else { Vec3::ZERO }
 //!     }
-//!     fn sample(&self, wo: Vec3, u: Vec2, _uc: f32) -> Option<BxdfSample<f32>> {
+//!     fn sample(&self, wo: Vec3, u: Vec2, _uc: f32) -> Option<BxdfSample<Vec3>> {
 //!         let wi = cosine_hemisphere(u);
 //!         let pdf = self.pdf(wo, wi);
 //!         (pdf > 0.0).then(|| BxdfSample { wi, f: self.eval(wo, wi), pdf, lobe: Lobes::DIFFUSE_REFLECTION, eta: 1.0 })
@@ -118,10 +123,10 @@ mod stats;
 pub mod strategies;
 
 pub use laws::{
-    Albedo, BxdfCheck, Config, Law, LawReport, ReciprocityPair, Report, SUBNORMAL_FLOOR, albedo,
-    albedo_cosine, albedo_sampled, check_bxdf, check_ndf, chi2_bxdf, chi2_normals, consistency,
-    d_normalization, energy_bound, positivity, projected_area, projected_area_masked, reciprocity,
-    reciprocity_pair, sample_consistency, sampling_chi2, visible_normalization,
+    Albedo, BxdfCheck, Channel, Config, Law, LawReport, ReciprocityPair, Report, SUBNORMAL_FLOOR,
+    albedo, albedo_cosine, albedo_sampled, check_bxdf, check_ndf, chi2_bxdf, chi2_normals,
+    consistency, d_normalization, energy_bound, positivity, projected_area, projected_area_masked,
+    reciprocity, reciprocity_pair, sample_consistency, sampling_chi2, visible_normalization,
 };
 pub use stats::{
     Accumulator, Chi2Bin, Chi2Config, Chi2Report, Chi2Residual, Estimate, Pcg32, chi2_sphere,

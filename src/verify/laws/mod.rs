@@ -16,8 +16,8 @@ mod distribution;
 mod report;
 
 pub use bxdf::{
-    Albedo, ReciprocityPair, SUBNORMAL_FLOOR, albedo, albedo_cosine, albedo_sampled, check_bxdf,
-    chi2_bxdf, consistency, energy_bound, positivity, reciprocity, reciprocity_pair,
+    Albedo, Channel, ReciprocityPair, SUBNORMAL_FLOOR, albedo, albedo_cosine, albedo_sampled,
+    check_bxdf, chi2_bxdf, consistency, energy_bound, positivity, reciprocity, reciprocity_pair,
     sample_consistency, sampling_chi2,
 };
 pub use config::{BxdfCheck, Config};
