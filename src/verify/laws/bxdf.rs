@@ -180,6 +180,33 @@ fn worst_channel(mut reports: Vec<LawReport>) -> LawReport {
     report
 }
 
+/// One [`Accumulator`] per channel.
+struct PerChannel(Vec<Accumulator>);
+
+impl PerChannel {
+    /// Empty accumulators for `bxdf`'s channels.
+    fn new<B: Bxdf + ?Sized>(bxdf: &B) -> Self {
+        Self(vec![Accumulator::new(); channels(bxdf)])
+    }
+
+    /// Adds `map` of each channel of `value` (in `f64`) to that channel's accumulator.
+    fn push<S: Spectrum>(&mut self, value: S, map: impl Fn(f64) -> f64) {
+        for (c, a) in self.0.iter_mut().enumerate() {
+            a.push(map(f64::from(value.channel(c))));
+        }
+    }
+
+    /// Adds a zero to every channel.
+    fn push_zero(&mut self) {
+        self.0.iter_mut().for_each(|a| a.push(0.0));
+    }
+
+    /// The estimates, one per channel.
+    fn finish(&self) -> Vec<Estimate> {
+        self.0.iter().map(Accumulator::finish).collect()
+    }
+}
+
 // ---------------------------------------------------------------------------------------
 // Measurements
 // ---------------------------------------------------------------------------------------
@@ -195,33 +222,22 @@ where
     B: Bxdf<Spectrum = f32> + ?Sized,
     &'c C: Into<Config>,
 {
-    let config = config.into();
-    albedo_sampled_channels(bxdf, wo, config.albedo_samples, config.seed)[0]
+    albedo_sampled_channels(bxdf, wo, &config.into())[0]
 }
 
 /// [`albedo_sampled`] of every channel, on the same samples.
-fn albedo_sampled_channels<B: Bxdf + ?Sized>(
-    bxdf: &B,
-    wo: Vec3,
-    samples: usize,
-    seed: u64,
-) -> Vec<Estimate> {
-    let mut rng = Pcg32::new(seed, STREAM);
-    let mut acc = vec![Accumulator::new(); channels(bxdf)];
-    for _ in 0..samples {
+fn albedo_sampled_channels<B: Bxdf + ?Sized>(bxdf: &B, wo: Vec3, config: &Config) -> Vec<Estimate> {
+    let mut rng = Pcg32::new(config.seed, STREAM);
+    let mut acc = PerChannel::new(bxdf);
+    for _ in 0..config.albedo_samples {
         let u = rng.next_vec2();
         let uc = rng.next_f32();
         match bxdf.sample(wo, u, uc) {
-            Some(s) => {
-                let w = s.weight();
-                for (c, a) in acc.iter_mut().enumerate() {
-                    a.push(f64::from(w.channel(c)));
-                }
-            }
-            None => acc.iter_mut().for_each(|a| a.push(0.0)),
+            Some(s) => acc.push(s.weight(), |w| w),
+            None => acc.push_zero(),
         }
     }
-    acc.iter().map(Accumulator::finish).collect()
+    acc.finish()
 }
 
 /// The directional albedo estimated independently of the model's sampler: `wi` cosine-
@@ -236,21 +252,15 @@ where
     B: Bxdf<Spectrum = f32> + ?Sized,
     &'c C: Into<Config>,
 {
-    let config = config.into();
-    albedo_cosine_channels(bxdf, wo, config.albedo_samples, config.seed)[0]
+    albedo_cosine_channels(bxdf, wo, &config.into())[0]
 }
 
 /// [`albedo_cosine`] of every channel, on the same samples.
-fn albedo_cosine_channels<B: Bxdf + ?Sized>(
-    bxdf: &B,
-    wo: Vec3,
-    samples: usize,
-    seed: u64,
-) -> Vec<Estimate> {
+fn albedo_cosine_channels<B: Bxdf + ?Sized>(bxdf: &B, wo: Vec3, config: &Config) -> Vec<Estimate> {
     let both_sides = bxdf.lobes().is_transmissive();
-    let mut rng = Pcg32::new(seed, STREAM ^ 1);
-    let mut acc = vec![Accumulator::new(); channels(bxdf)];
-    for _ in 0..samples {
+    let mut rng = Pcg32::new(config.seed, STREAM ^ 1);
+    let mut acc = PerChannel::new(bxdf);
+    for _ in 0..config.albedo_samples {
         let mut wi = cosine_hemisphere(rng.next_vec2());
         let mut pdf = f64::from(cosine_hemisphere_pdf(wi.z));
         if both_sides {
@@ -260,15 +270,13 @@ fn albedo_cosine_channels<B: Bxdf + ?Sized>(
             }
         }
         if pdf > 0.0 {
-            let f = bxdf.eval(wo, wi);
-            for (c, a) in acc.iter_mut().enumerate() {
-                a.push(f64::from(f.channel(c)) * f64::from(wi.z.abs()) / pdf);
-            }
+            let cos = f64::from(wi.z.abs());
+            acc.push(bxdf.eval(wo, wi), |f| f * cos / pdf);
         } else {
-            acc.iter_mut().for_each(|a| a.push(0.0));
+            acc.push_zero();
         }
     }
-    acc.iter().map(Accumulator::finish).collect()
+    acc.finish()
 }
 
 /// The directional albedo at `wo` by two independent estimators.
@@ -289,10 +297,8 @@ pub fn albedo<B: Bxdf<Spectrum = f32> + ?Sized>(bxdf: &B, wo: Vec3, config: &Con
 
 /// [`albedo`] of every channel.
 fn albedo_channels<B: Bxdf + ?Sized>(bxdf: &B, wo: Vec3, config: &Config) -> Vec<Albedo> {
-    let (samples, seed) = (config.albedo_samples, config.seed);
-    let sampled = albedo_sampled_channels(bxdf, wo, samples, seed);
-    let cosine =
-        (!bxdf.lobes().is_specular()).then(|| albedo_cosine_channels(bxdf, wo, samples, seed));
+    let sampled = albedo_sampled_channels(bxdf, wo, config);
+    let cosine = (!bxdf.lobes().is_specular()).then(|| albedo_cosine_channels(bxdf, wo, config));
     sampled
         .into_iter()
         .enumerate()
@@ -333,16 +339,14 @@ where
     B: Bxdf<Spectrum = f32> + ?Sized,
     &'c C: Into<Config>,
 {
-    let config = config.into();
-    sample_consistency_channels(bxdf, wo, config.consistency_samples, config.seed)[0]
+    sample_consistency_channels(bxdf, wo, &config.into())[0]
 }
 
 /// [`sample_consistency`] of every channel, on the same samples (the `pdf` part is shared).
 fn sample_consistency_channels<B: Bxdf + ?Sized>(
     bxdf: &B,
     wo: Vec3,
-    samples: usize,
-    seed: u64,
+    config: &Config,
 ) -> Vec<(f64, f64)> {
     let rel = |a: f32, b: f32| {
         let (a, b) = (f64::from(a), f64::from(b));
@@ -360,9 +364,9 @@ fn sample_consistency_channels<B: Bxdf + ?Sized>(
             worst.max(x)
         }
     };
-    let mut rng = Pcg32::new(seed, STREAM ^ 2);
+    let mut rng = Pcg32::new(config.seed, STREAM ^ 2);
     let (mut worst_f, mut worst_pdf) = (vec![0.0_f64; channels(bxdf)], 0.0_f64);
-    for _ in 0..samples {
+    for _ in 0..config.consistency_samples {
         let u = rng.next_vec2();
         let uc = rng.next_f32();
         if let Some(s) = bxdf.sample(wo, u, uc).filter(|s| !s.is_specular()) {
@@ -819,7 +823,7 @@ pub fn sampling_chi2<B: Bxdf + ?Sized>(bxdf: &B, config: &Config) -> LawReport {
 pub fn consistency<B: Bxdf + ?Sized>(bxdf: &B, config: &Config) -> LawReport {
     let mut worst = vec![(0.0_f64, Vec3::Z); channels(bxdf)];
     for wo in config.viewer_directions(bxdf) {
-        let gaps = sample_consistency_channels(bxdf, wo, config.consistency_samples, config.seed);
+        let gaps = sample_consistency_channels(bxdf, wo, config);
         for (w, (f, p)) in worst.iter_mut().zip(gaps) {
             // `f64::max` would drop a NaN: keep it, so that it fails.
             let gap = if f.is_nan() || p.is_nan() {

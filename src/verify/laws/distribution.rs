@@ -21,6 +21,7 @@ use crate::verify::stats::{
 };
 use glam::{Vec2, Vec3};
 use std::format;
+use std::string::String;
 use std::vec;
 
 /// The density of `normalize(M h)`, `M = diag(sx, sy, 1)`, for `h` of density `pdf_h`:
@@ -174,26 +175,29 @@ pub fn check_ndf<D: NormalDistribution + ?Sized>(name: &str, dist: &D, config: &
         }
         out
     };
-    let (dev, sd, at, ok) = worst(&|w| (projected_area(dist, w, config), f64::from(w.z)));
-    let area = LawReport {
-        law: Law::ProjectedArea,
-        passed: ok,
-        figure: dev,
-        uncertainty: sd,
-        figure_name: "max |∫ G1 ⟨wo,m⟩ D / cos θo − 1|",
-        budget: format!("{budget} × {n} angles"),
-        detail: format!("largest at θo = {at}°, k = {k:.2}"),
-    };
-    let (dev, sd, at, ok) = worst(&|w| (visible_normalization(dist, w, config), 1.0));
-    let visible = LawReport {
-        law: Law::VisibleNormalization,
-        passed: ok,
-        figure: dev,
-        uncertainty: sd,
-        figure_name: "max |∫ D_w − 1|",
-        budget: format!("{budget} × {n} angles"),
-        detail: format!("largest at θ = {at}°"),
-    };
+    // The report of the largest deviation, `detail` saying at which angle.
+    let deviation =
+        |law, figure_name, detail: &dyn Fn(f32) -> String, (dev, sd, at, ok)| LawReport {
+            law,
+            passed: ok,
+            figure: dev,
+            uncertainty: sd,
+            figure_name,
+            budget: format!("{budget} × {n} angles"),
+            detail: detail(at),
+        };
+    let area = deviation(
+        Law::ProjectedArea,
+        "max |∫ G1 ⟨wo,m⟩ D / cos θo − 1|",
+        &|at| format!("largest at θo = {at}°, k = {k:.2}"),
+        worst(&|w| (projected_area(dist, w, config), f64::from(w.z))),
+    );
+    let visible = deviation(
+        Law::VisibleNormalization,
+        "max |∫ D_w − 1|",
+        &|at| format!("largest at θ = {at}°"),
+        worst(&|w| (visible_normalization(dist, w, config), 1.0)),
+    );
 
     let significance = sidak(config.significance / 4.0, n);
     let mut min_p = (1.0_f64, 0.0_f32);
