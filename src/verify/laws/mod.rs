@@ -1,10 +1,11 @@
 //! The laws room: what a model must obey, measured, reported and checked, one file per
 //! subject.
 //!
-//! What lives here: `bxdf.rs`, the laws of a BSDF (positivity, reciprocity, the energy bound
-//! by two albedo estimators, sampling, consistency) and [`check_bxdf`]; `distribution.rs`, the
-//! laws of a microfacet distribution (`D` normalisation, projected area, visible normals,
-//! sampling) and [`check_ndf`]; and what the two share: the configuration ([`Config`],
+//! What lives here: `bxdf.rs`, the laws of a BSDF of any spectrum (positivity, reciprocity,
+//! the energy bound by two albedo estimators, sampling, consistency), [`check_bxdf`], and
+//! [`Channel`]; `distribution.rs`, the laws of a microfacet distribution (`D` normalisation,
+//! projected area, visible normals, sampling) and [`check_ndf`]; and what the two share: the
+//! one configuration ([`Config`], with the older [`BxdfCheck`] that converts into it,
 //! `config.rs`) and the reports ([`Law`], [`LawReport`], [`Report`], `report.rs`).
 //!
 //! Each file measures with the tools of the statistics room and nothing else; neither file

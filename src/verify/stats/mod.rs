@@ -8,8 +8,9 @@
 //! functions its p-value needs ([`gamma_q`] and friends, `gamma.rs`); and significance levels
 //! with their normal quantiles ([`sidak`], [`two_sided_quantile`], `significance.rs`).
 //!
-//! Everything here is public through [`crate::verify`], because a check built outside the
-//! crate needs the same tools. Nothing here depends on the laws room.
+//! The tools are public through [`crate::verify`], because a check built outside the crate
+//! needs them too (only the stretch of a direction stays inside, shared with the distribution
+//! laws). Nothing here depends on the laws room.
 
 mod chi2;
 mod estimate;
