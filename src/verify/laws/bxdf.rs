@@ -892,3 +892,70 @@ pub fn check_bxdf<B: Bxdf + ?Sized>(name: &str, bxdf: &B, config: &Config) -> Re
         laws,
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::bxdf::Lambert;
+
+    fn report(passed: bool, figure: f64) -> LawReport {
+        LawReport {
+            law: Law::EnergyBound,
+            passed,
+            figure,
+            uncertainty: 0.0,
+            figure_name: "max albedo",
+            budget: String::new(),
+            detail: String::from("here"),
+        }
+    }
+
+    #[test]
+    fn the_worst_channel_is_a_failure_then_the_largest_figure() {
+        let one = worst_channel(vec![report(true, 0.5)]);
+        assert_eq!(one.detail, "here");
+        let r = worst_channel(vec![
+            report(true, 0.9),
+            report(false, 0.2),
+            report(true, 0.5),
+        ]);
+        assert_eq!((r.passed, r.figure), (false, 0.2));
+        assert_eq!(r.detail, "green channel (worst of 3): here");
+        let r = worst_channel(vec![
+            report(true, 0.1),
+            report(true, 0.4),
+            report(true, f64::NAN),
+        ]);
+        assert!(r.figure.is_nan());
+        assert!(
+            r.detail.starts_with("blue channel (worst of 3)"),
+            "{}",
+            r.detail
+        );
+        let r = worst_channel(vec![report(true, 0.3); 4]);
+        assert_eq!(r.detail, "channel 0 (worst of 4, tied with 3 others): here");
+    }
+
+    #[test]
+    #[should_panic(expected = "channel 3 of a 3-channel spectrum")]
+    fn a_channel_beyond_the_spectrum_is_refused() {
+        let rgb = Lambert::new(Vec3::splat(0.5)).unwrap();
+        let _ = Channel::new(&rgb, 3);
+    }
+
+    #[test]
+    fn a_channel_is_the_model_in_that_channel() {
+        let rgb = Lambert::new(Vec3::new(0.2, 0.5, 0.8)).unwrap();
+        let blue = Channel::new(&rgb, 2);
+        let (wo, wi) = (Vec3::new(0.0, 0.6, 0.8), Vec3::new(0.6, 0.0, 0.8));
+        assert_eq!(blue.index(), 2);
+        assert_eq!(blue.eval(wo, wi), rgb.eval(wo, wi).z);
+        assert_eq!(blue.pdf(wo, wi), rgb.pdf(wo, wi));
+        assert_eq!(blue.lobes(), rgb.lobes());
+        let (s, b) = (
+            rgb.sample(wo, Vec2::new(0.3, 0.7), 0.5).unwrap(),
+            blue.sample(wo, Vec2::new(0.3, 0.7), 0.5).unwrap(),
+        );
+        assert_eq!((b.wi, b.f, b.pdf), (s.wi, s.f.z, s.pdf));
+    }
+}

@@ -190,3 +190,55 @@ impl From<&Config> for Config {
         config.clone()
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::vec;
+
+    #[test]
+    fn a_bxdf_check_becomes_every_estimate_budget() {
+        let c = Config::from(BxdfCheck {
+            samples: 1234,
+            seed: 9,
+        });
+        assert_eq!(
+            (
+                c.albedo_samples,
+                c.consistency_samples,
+                c.integral_samples,
+                c.seed
+            ),
+            (1234, 1234, 1234, 9)
+        );
+        assert_eq!(
+            Config {
+                albedo_samples: 1234,
+                consistency_samples: 1234,
+                integral_samples: 1234,
+                seed: 9,
+                ..Config::default()
+            },
+            c
+        );
+    }
+
+    #[test]
+    fn distribution_directions_are_the_defaults_or_the_given_ones() {
+        let defaults = Config::default().distribution_directions();
+        let thetas: Vec<f32> = defaults.iter().map(|&(t, _)| t).collect();
+        assert_eq!(thetas, [0.0, 30.0, 60.0, 85.0, 89.0]);
+        assert!(
+            defaults
+                .iter()
+                .all(|(_, w)| (w.length() - 1.0).abs() < 1e-6)
+        );
+        let given = Config {
+            directions: vec![Vec3::Z, Vec3::new(0.6, 0.0, 0.8)],
+            ..Config::default()
+        };
+        let dirs = given.distribution_directions();
+        assert_eq!(dirs[0], (0.0, Vec3::Z));
+        assert!((dirs[1].0 - 36.869_9).abs() < 1e-3, "{dirs:?}");
+    }
+}
