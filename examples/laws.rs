@@ -21,8 +21,8 @@ use lobe::fresnel::{Conductor, NoFresnel, Schlick};
 use lobe::microfacet::{
     Beckmann, BeckmannMasking, BlinnPhongNdf, Ggx, Gtr, Masking, NormalDistribution,
 };
-use lobe::verify::{Config, Law, NdfCheck, NdfConfig, Report, check_bxdf, check_ndf};
-use lobe::{Alpha, ComplexIor, Eta, ParamError, Roughness};
+use lobe::verify::{Config, Law, Report, check_bxdf, check_ndf};
+use lobe::{Alpha, ComplexIor, Eta, ParamError, Roughness, Vec2};
 
 /// A model for the matrix: its label, the model, and its reciprocity index (`η` for a
 /// radiance-mode refraction, `1/η` in importance mode, else 1).
@@ -286,14 +286,12 @@ fn main() -> Result<(), ParamError> {
     let dists = distributions()?;
     let m = dists.len();
     for (name, dist, width) in &dists {
-        let config = NdfConfig {
-            check: NdfCheck {
-                samples: 400_000,
-                seed,
-                ..NdfCheck::stretched(*width, *width)
-            },
+        let config = Config {
+            integral_samples: 400_000,
+            seed,
+            stretch: Vec2::splat(*width),
             significance: lobe::verify::sidak(0.01, m),
-            ..NdfConfig::default()
+            ..Config::default()
         };
         let report = check_ndf(name, dist.as_ref(), &config);
         failed_laws += report.failures().count();

@@ -58,7 +58,7 @@
 
 mod common;
 
-use common::reference::{Dev, field, field32, vec_field};
+use common::reference::{Dev, Kind, assert_no_failures, field, field32, print_devs, vec_field};
 
 use lobe::bxdf::{Bxdf, Lambert, Microfacet, RoughDielectric, TransportMode};
 use lobe::fresnel;
@@ -154,22 +154,6 @@ fn context(i: usize, r: &Value) -> String {
 // ---------------------------------------------------------------------------------------------
 // The models
 // ---------------------------------------------------------------------------------------------
-
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Kind {
-    Ggx,
-    Beckmann,
-}
-
-impl Kind {
-    fn of(r: &Value) -> Self {
-        match r["distribution"].as_str() {
-            Some("ggx") => Self::Ggx,
-            Some("beckmann") => Self::Beckmann,
-            other => panic!("unknown distribution {other:?} in {r}"),
-        }
-    }
-}
 
 /// How the record's parameters become a lobe model. [`Setup::MITSUBA`] is the real mapping;
 /// the others are deliberate mismatches for the "can fail" tests.
@@ -335,24 +319,10 @@ impl Report {
     fn check(&mut self, i: usize, r: &Value, q: &'static str, lobe: f64, oracle: f64) {
         let err = (lobe - oracle).abs();
         let fail = !(err <= ATOL + rtol(r) * oracle.abs());
-        let tiny = oracle == 0.0 && lobe != 0.0 && !fail;
         let coarse = format!("{} {q}", text(r, "bsdf"));
         let fine = format!("{} {q}", fine_category(r));
-        for dev in [
-            self.devs.entry(coarse).or_default(),
-            self.fine.entry(fine).or_default(),
-        ] {
-            dev.values += 1;
-            dev.max_abs = dev.max_abs.max(err);
-            if oracle != 0.0 {
-                dev.max_rel = dev.max_rel.max(err / oracle.abs());
-            } else {
-                dev.zeros += 1;
-            }
-            dev.tiny_where_zero += usize::from(tiny);
-            dev.failures += usize::from(fail);
-        }
-        if tiny {
+        self.fine.entry(fine).or_default().add(lobe, oracle, fail);
+        if self.devs.entry(coarse).or_default().add(lobe, oracle, fail) {
             self.tiny_where_zero
                 .push(format!("{}: {q}: lobe {lobe:e}, mitsuba 0", context(i, r)));
         }
@@ -381,25 +351,16 @@ impl Report {
             self.total(),
             self.records
         );
-        for (category, dev) in &self.devs {
-            eprintln!("  {category}: {dev}");
-        }
+        print_devs("  ", &self.devs);
         eprintln!("  by distribution and lobe:");
-        for (category, dev) in &self.fine {
-            eprintln!("    {category}: {dev}");
-        }
+        print_devs("    ", &self.fine);
         for note in &self.tiny_where_zero {
             eprintln!("  (within atol) {note}");
         }
     }
 
     fn assert_clean(&self) {
-        assert!(
-            self.failures.is_empty(),
-            "{} failures:\n{}",
-            self.failures.len(),
-            self.failures.join("\n")
-        );
+        assert_no_failures(&self.failures);
     }
 }
 

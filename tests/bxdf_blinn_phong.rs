@@ -5,13 +5,18 @@
 
 mod common;
 
-use common::k_sigma;
-use common::laws::{
-    Model, assert_all_laws, assert_consistent, assert_reciprocal, assert_total, viewer_directions,
+use common::exact::{
+    assert_edge_samples, assert_lobe_choice, assert_lobes_follow_weights, assert_one_sided,
+    assert_reciprocity_bit_exact, assert_values, near_lobe_pairs,
 };
-use lobe::bxdf::{BlinnPhong, BlinnPhongForm, Bxdf, Lobes};
+use common::laws::{
+    Model, assert_albedo_against, assert_all_laws, assert_consistent, assert_reciprocal,
+    assert_total, viewer_directions,
+};
+use common::{angle_f64, f64s, k_sigma};
+use lobe::Vec3;
+use lobe::bxdf::{BlinnPhong, BlinnPhongForm, Bxdf};
 use lobe::verify::{BxdfCheck, albedo_sampled};
-use lobe::{Vec2, Vec3};
 
 use BlinnPhongForm::{Modified, Normalized};
 
@@ -149,23 +154,11 @@ fn sharp_lobes_are_consistent_and_bounded() {
             model.name
         );
         assert_consistent(&model, 1e-4);
-        let mut rng = lobe::verify::Pcg32::new(5, 0);
-        let spread = 2.0 / p.sqrt();
-        for _ in 0..2_000 {
-            let wo = lobe::sampling::uniform_hemisphere(rng.next_vec2());
-            let d = (rng.next_vec2() - 0.5) * spread;
-            // A half vector within a few lobe widths of the normal.
-            let h = Vec3::new(d.x, d.y, 1.0).normalize();
-            let wi = lobe::frame::reflect(wo, h).normalize();
-            if wo.z > 0.0 && wi.z > 0.0 {
-                let (f, b) = (model.bxdf.eval(wo, wi), model.bxdf.eval(wi, wo));
-                assert!(
-                    f > 0.0 && f == b,
-                    "{}: f({wo}, {wi}) = {f}, reversed {b}",
-                    model.name
-                );
-            }
-        }
+        // Pairs whose half vector is within a few lobe widths of the normal.
+        let pairs = near_lobe_pairs(p, |wo, d| {
+            lobe::frame::reflect(wo, Vec3::new(d.x, d.y, 1.0).normalize()).normalize()
+        });
+        assert_reciprocity_bit_exact(&model.name, model.bxdf.as_ref(), &pairs, true);
         // The closed form in f64: at p = 10⁶ the estimate's standard error (1e-8) is below
         // the f32 rounding of `albedo_at_normal`. The estimate itself averages f32 weights,
         // whose rounding the law suite allows for as 1e-6 relative.
@@ -178,16 +171,7 @@ fn sharp_lobes_are_consistent_and_bounded() {
         let exact = f64::from(r) + f64::from(ks) * lobe;
         for (i, wo) in viewer_directions(&model).into_iter().enumerate() {
             let a = albedo_sampled(model.bxdf.as_ref(), wo, &BxdfCheck::default());
-            let allowance = k * a.std_err + 1e-6 * exact;
-            if i == 0 {
-                assert!(
-                    (a.mean - exact).abs() <= allowance,
-                    "{}: {a} vs {exact}",
-                    model.name
-                );
-            } else {
-                assert!(a.mean <= exact + allowance, "{}: {a}", model.name);
-            }
+            assert_albedo_against(&model.name, &a, exact, k, i == 0);
         }
     }
 }
@@ -227,51 +211,17 @@ fn values_match_an_independent_computation() {
     ];
     for (form, fs) in values {
         let m = BlinnPhong::new(0.3_f32, 0.6, 20.0, form).unwrap();
-        for (((wo, wi), f), pdf) in pairs.into_iter().zip(fs).zip(pdfs) {
-            let (wo, wi) = (wo.normalize(), wi.normalize());
-            let (got_f, got_pdf) = (f64::from(m.eval(wo, wi)), f64::from(m.pdf(wo, wi)));
-            assert!(
-                (got_f - f).abs() <= 1e-5 * f,
-                "{form:?} f = {got_f}, expected {f}"
-            );
-            assert!(
-                (got_pdf - pdf).abs() <= 1e-5 * pdf,
-                "{form:?} pdf = {got_pdf}, expected {pdf}"
-            );
-        }
-        // One-sided.
+        let name = format!("BlinnPhong {form:?}");
+        let cases: Vec<_> = pairs
+            .iter()
+            .zip(fs)
+            .zip(pdfs)
+            .map(|((&(wo, wi), f), pdf)| (wo, wi, f, pdf))
+            .collect();
+        assert_values(&name, &m, &cases, 1e-5);
         let (wo, wi) = (Vec3::new(0.6, 0.0, 0.8), Vec3::new(-0.6, 0.0, 0.8));
-        assert!(m.eval(wo, wi) > 0.0);
-        for (a, b) in [
-            (wo, -wi),
-            (-wo, wi),
-            (-wo, -wi),
-            (Vec3::X, wi),
-            (wo, Vec3::Y),
-        ] {
-            assert_eq!(m.eval(a, b), 0.0);
-            assert_eq!(m.pdf(a, b), 0.0);
-        }
-        assert!(m.sample(-wo, Vec2::splat(0.5), 0.5).is_none());
-        assert!(m.sample(Vec3::X, Vec2::splat(0.5), 0.5).is_none());
+        assert_one_sided(&name, &m, wo, wi);
     }
-}
-
-/// The angle between two directions, in f64 (the atan2 of the cross and dot products of the
-/// normalised f64 vectors, accurate at small angles).
-fn angle_f64(a: [f64; 3], b: Vec3) -> f64 {
-    let n = |v: [f64; 3]| {
-        let l = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
-        [v[0] / l, v[1] / l, v[2] / l]
-    };
-    let (a, b) = (n(a), n([f64::from(b.x), f64::from(b.y), f64::from(b.z)]));
-    let cross = [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ];
-    let sin = (cross[0] * cross[0] + cross[1] * cross[1] + cross[2] * cross[2]).sqrt();
-    sin.atan2(a[0] * b[0] + a[1] * b[1] + a[2] * b[2])
 }
 
 /// For a large exponent `(n·h)^p` is computed from `sin² θh` without cancellation: it
@@ -290,7 +240,7 @@ fn large_exponents_keep_their_shape_near_the_normal() {
                 f64::from(wo.y) + f64::from(wi.y),
                 f64::from(wo.z) + f64::from(wi.z),
             ];
-            let theta_h = angle_f64(s, Vec3::Z);
+            let theta_h = angle_f64(s, f64s(Vec3::Z));
             let expect = theta_h.cos().powf(f64::from(p));
             let got = f64::from(m.eval(wo, wi));
             assert!(
@@ -338,21 +288,11 @@ fn exact_and_grazing_configurations_are_finite() {
                         "{form:?} p = {p}: f({wo}, {wi}) = {f}, pdf {pdf}"
                     );
                 }
-                let edges = [0.0_f32, 1e-7, 0.5, 1.0 - 6e-8];
-                for wo in [Vec3::Z, grazing, tiny] {
-                    for &x in &edges {
-                        for &y in &edges {
-                            for uc in [0.0_f32, 0.4, 1.0 - 6e-8] {
-                                if let Some(s) = m.sample(wo, Vec2::new(x, y), uc) {
-                                    assert!(s.wi.z > 0.0 && s.wi.is_finite());
-                                    assert!(s.f.is_finite() && s.f >= 0.0);
-                                    assert!(s.pdf.is_finite() && s.pdf > 0.0);
-                                    assert!(s.weight().is_finite(), "{s:?}");
-                                }
-                            }
-                        }
-                    }
-                }
+                assert_edge_samples(
+                    &format!("BlinnPhong {form:?}"),
+                    &m,
+                    &[Vec3::Z, grazing, tiny],
+                );
             }
         }
     }
@@ -380,14 +320,7 @@ fn spectral_weights_act_per_channel() {
 
 #[test]
 fn lobes_form_and_accessors() {
-    let lobes = |r: f32, ks: f32| BlinnPhong::new(r, ks, 10.0, Normalized).unwrap().lobes();
-    assert_eq!(
-        lobes(0.5, 0.5),
-        Lobes::DIFFUSE_REFLECTION | Lobes::GLOSSY_REFLECTION
-    );
-    assert_eq!(lobes(0.5, 0.0), Lobes::DIFFUSE_REFLECTION);
-    assert_eq!(lobes(0.0, 0.5), Lobes::GLOSSY_REFLECTION);
-    assert_eq!(lobes(0.0, 0.0), Lobes::DIFFUSE_REFLECTION);
+    assert_lobes_follow_weights(|r, ks| BlinnPhong::new(r, ks, 10.0, Normalized).unwrap().lobes());
     assert_eq!(BlinnPhongForm::default(), Normalized);
     let m = BlinnPhong::new(0.25_f32, 0.5, 7.0, Modified).unwrap();
     assert_eq!(
@@ -395,15 +328,7 @@ fn lobes_form_and_accessors() {
         (0.25, 0.5, 7.0, Modified)
     );
     // The choice follows uc: below P_d = 1/3 diffuse, above glossy.
-    let u = Vec2::new(0.3, 0.6);
-    assert_eq!(
-        m.sample(Vec3::Z, u, 0.3).unwrap().lobe,
-        Lobes::DIFFUSE_REFLECTION
-    );
-    assert_eq!(
-        m.sample(Vec3::Z, u, 0.4).unwrap().lobe,
-        Lobes::GLOSSY_REFLECTION
-    );
+    assert_lobe_choice(&m, 0.3, 0.4);
 }
 
 #[test]

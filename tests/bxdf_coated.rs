@@ -5,7 +5,7 @@
 mod common;
 
 use common::k_sigma;
-use common::laws::{Model, assert_all_laws};
+use common::laws::{Model, assert_every_model_obeys_every_law};
 use lobe::bxdf::{Glazed, Microfacet, Plastic};
 use lobe::fresnel::Dielectric;
 use lobe::microfacet::{Beckmann, Ggx, Masking};
@@ -34,9 +34,7 @@ fn coated_models_obey_every_law() {
             Plastic::new(1.0f32, Beckmann::isotropic(a(0.6)), glass()).unwrap(),
         ),
     ];
-    for m in &models {
-        assert_all_laws(m, models.len());
-    }
+    assert_every_model_obeys_every_law(&models);
 }
 
 /// The glazed albedo is `F + (1 − F) ρ`: measured by sampling, and exactly 1 for a white base

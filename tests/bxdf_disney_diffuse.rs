@@ -4,6 +4,10 @@
 
 mod common;
 
+use common::exact::{
+    assert_grey_value, assert_one_sided, assert_reciprocity_bit_exact,
+    assert_reflectance_validated, graze, hemisphere_pairs,
+};
 use common::quadrature::albedo_quadrature;
 
 use common::laws::{Model, assert_all_laws};
@@ -40,18 +44,10 @@ fn disney_diffuse_obeys_every_law_with_its_measured_albedo_bound() {
 
 #[test]
 fn reciprocity_is_exact() {
-    let mut rng = Pcg32::new(7, 3);
-    let m = disney(0.9, 0.8);
     // Bit-for-bit: the formula is symmetric term by term, so the error is exactly 0.
-    for _ in 0..100_000 {
-        let wo = lobe::sampling::cosine_hemisphere(rng.next_vec2());
-        let wi = lobe::sampling::uniform_hemisphere(rng.next_vec2());
-        assert_eq!(
-            m.eval(wo, wi).to_bits(),
-            m.eval(wi, wo).to_bits(),
-            "{wo} {wi}"
-        );
-    }
+    let pairs = hemisphere_pairs(&mut Pcg32::new(7, 3), 100_000);
+    let m = disney(0.9, 0.8);
+    assert_reciprocity_bit_exact("DisneyDiffuse ρ=0.9 r=0.8", &m, &pairs, false);
 }
 
 #[test]
@@ -155,13 +151,7 @@ fn values_match_an_independent_evaluation() {
     for ((to, po), (ti, pi), want_half, want_full) in cases {
         let (wo, wi) = (common::dir(to, po), common::dir(ti, pi));
         for (m, want) in [(half, want_half), (full, want_full)] {
-            let got = m.eval(wo, wi);
-            for c in [got.x, got.y, got.z] {
-                assert!(
-                    ((f64::from(c) - want) / want).abs() < 3e-6,
-                    "f({wo}, {wi}) = {c}, want {want}"
-                );
-            }
+            assert_grey_value(&m, wo, wi, want, 3e-6);
         }
     }
     assert_eq!(full.roughness().get(), 1.0);
@@ -170,10 +160,6 @@ fn values_match_an_independent_evaluation() {
 
 #[test]
 fn finite_at_the_normal_and_at_grazing() {
-    let graze = |z: f32, phi: f32| {
-        let r = (1.0 - z * z).sqrt();
-        Vec3::new(r * phi.cos(), r * phi.sin(), z)
-    };
     let m = disney(1.0, 1.0);
     assert_eq!(m.eval(Vec3::Z, Vec3::Z), core::f32::consts::FRAC_1_PI);
     for z in [1e-7f32, 1e-20, 1e-45] {
@@ -196,26 +182,17 @@ fn finite_at_the_normal_and_at_grazing() {
         let opposite = m.eval(graze(z, 0.0), graze(z, core::f32::consts::PI));
         assert!((opposite - 0.25 * core::f32::consts::FRAC_1_PI).abs() < 1e-5);
     }
-    assert_eq!(m.eval(graze(0.0, 0.0), Vec3::Z), 0.0);
-    assert_eq!(m.eval(Vec3::Z, -Vec3::Z), 0.0);
-    assert!(m.sample(-Vec3::Z, Vec2::new(0.5, 0.5), 0.0).is_none());
-    assert!(
-        m.sample(graze(0.0, 1.0), Vec2::new(0.5, 0.5), 0.0)
-            .is_none()
-    );
+    // Below the horizon and exactly on it: nothing.
+    assert_one_sided("DisneyDiffuse ρ=1 r=1", &m, Vec3::Z, Vec3::Z);
 }
 
 #[test]
 fn refuses_bad_parameters() {
     let r = Roughness::new(0.5).unwrap();
-    for rho in [f32::NAN, -0.1, 1.01, f32::INFINITY] {
-        assert_eq!(
-            DisneyDiffuse::new(rho, r).unwrap_err().param(),
-            "reflectance"
-        );
-    }
-    let e = DisneyDiffuse::new(Vec3::new(0.5, f32::NAN, 0.5), r).unwrap_err();
-    assert_eq!(e.param(), "reflectance");
+    assert_reflectance_validated(
+        |rho| DisneyDiffuse::new(rho, r),
+        |rho| DisneyDiffuse::new(rho, r),
+    );
     // The roughness is refused by its own type before it reaches the model.
     assert_eq!(Roughness::new(1.5).unwrap_err().param(), "roughness");
     assert!(DisneyDiffuse::new(0.0f32, r).is_ok() && DisneyDiffuse::new(1.0f32, r).is_ok());

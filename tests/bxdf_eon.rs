@@ -5,12 +5,16 @@
 
 mod common;
 
+use common::exact::{
+    assert_grey_value, assert_one_sided, assert_reciprocity_bit_exact,
+    assert_reflectance_validated, assert_total_at_grazing, hemisphere_pairs,
+};
 use common::quadrature::albedo_quadrature;
 
 use common::laws::{Model, assert_all_laws};
+use lobe::Vec3;
 use lobe::bxdf::{Bxdf, EnergyPreservingOrenNayar as Eon};
 use lobe::verify::Pcg32;
-use lobe::{Vec2, Vec3};
 
 /// The largest excess of the fitted model's albedo over 1 (ρ = 1), over `r ∈ [0, 1]` and
 /// `θo < 90°`: `1.46e-4` at `r = 1`, `θo ≈ 82.3°`, computed independently in f64 (a Python
@@ -53,15 +57,8 @@ fn reciprocity_is_exact() {
     let mut rng = Pcg32::new(7, 3);
     for m in [eon(0.9, 0.8), eon(0.9, 0.8).with_exact_albedo()] {
         // Bit-for-bit: every term is symmetric, so the error is exactly 0.
-        for _ in 0..100_000 {
-            let wo = lobe::sampling::cosine_hemisphere(rng.next_vec2());
-            let wi = lobe::sampling::uniform_hemisphere(rng.next_vec2());
-            assert_eq!(
-                m.eval(wo, wi).to_bits(),
-                m.eval(wi, wo).to_bits(),
-                "{wo} {wi}"
-            );
-        }
+        let pairs = hemisphere_pairs(&mut rng, 100_000);
+        assert_reciprocity_bit_exact("EON ρ=0.9 r=0.8", &m, &pairs, false);
     }
 }
 
@@ -186,13 +183,7 @@ fn values_match_an_independent_evaluation() {
     for ((to, po), (ti, pi), want_fit, want_exact) in cases {
         let (wo, wi) = (common::dir(to, po), common::dir(ti, pi));
         for (m, want) in [(fitted, want_fit), (exact, want_exact)] {
-            let got = m.eval(wo, wi);
-            for c in [got.x, got.y, got.z] {
-                assert!(
-                    ((f64::from(c) - want) / want).abs() < 3e-6,
-                    "f({wo}, {wi}) = {c}, want {want}"
-                );
-            }
+            assert_grey_value(&m, wo, wi, want, 3e-6);
         }
     }
     // r = 0 is Lambert, with no multiple-scattering residue.
@@ -203,37 +194,13 @@ fn values_match_an_independent_evaluation() {
 
 #[test]
 fn finite_at_the_normal_and_at_grazing() {
-    let graze = |z: f32, phi: f32| {
-        let r = (1.0 - z * z).sqrt();
-        Vec3::new(r * phi.cos(), r * phi.sin(), z)
-    };
     for m in [eon(1.0, 1.0), eon(1.0, 1.0).with_exact_albedo()] {
         // At the normal s = 0 and the compensation of μ = 1 is C1: f = A_F/π + multi C1².
         let f = m.eval(Vec3::Z, Vec3::Z);
         assert!(f.is_finite() && f > 0.0);
-        for z in [1e-7f32, 1e-20, 1e-38, 1e-45] {
-            for (wo, wi) in [
-                (graze(z, 0.0), graze(z, 0.0)),
-                (graze(z, 0.0), graze(z, 3.0)),
-                (graze(z, 0.1), Vec3::Z),
-                (graze(z, 0.0), graze(0.5, 0.0)),
-            ] {
-                for (x, y) in [(wo, wi), (wi, wo)] {
-                    let f = m.eval(x, y);
-                    assert!(f.is_finite() && f >= 0.0, "f({x}, {y}) = {f}");
-                    if let Some(s) = m.sample(x, Vec2::new(0.999, 0.5), 0.0) {
-                        assert!(s.f.is_finite() && s.weight().is_finite(), "{s:?}");
-                    }
-                }
-            }
-        }
-        assert_eq!(m.eval(graze(0.0, 0.0), Vec3::Z), 0.0);
-        assert_eq!(m.eval(Vec3::Z, -Vec3::Z), 0.0);
-        assert!(m.sample(-Vec3::Z, Vec2::new(0.5, 0.5), 0.0).is_none());
-        assert!(
-            m.sample(graze(0.0, 1.0), Vec2::new(0.5, 0.5), 0.0)
-                .is_none()
-        );
+        assert_total_at_grazing("EON ρ=1 r=1", &m);
+        // Below the horizon and exactly on it: nothing.
+        assert_one_sided("EON ρ=1 r=1", &m, Vec3::Z, Vec3::Z);
     }
 }
 
@@ -243,10 +210,6 @@ fn refuses_bad_parameters() {
         let e = Eon::new(0.5f32, r).unwrap_err();
         assert_eq!((e.param(), e.range()), ("roughness", "[0, 1]"));
     }
-    for rho in [f32::NAN, -0.1, 1.01] {
-        assert_eq!(Eon::new(rho, 0.3).unwrap_err().param(), "reflectance");
-    }
-    let e = Eon::new(Vec3::new(0.5, 0.5, f32::NAN), 0.3).unwrap_err();
-    assert_eq!(e.param(), "reflectance");
+    assert_reflectance_validated(|rho| Eon::new(rho, 0.3), |rho| Eon::new(rho, 0.3));
     assert!(Eon::new(1.0f32, 0.0).is_ok() && Eon::new(0.0f32, 1.0).is_ok());
 }

@@ -3,7 +3,7 @@
 
 mod common;
 
-use common::laws::{Model, assert_all_laws};
+use common::laws::{Model, assert_every_model_obeys_every_law};
 use lobe::bxdf::Microfacet;
 use lobe::fresnel::{Conductor, NoFresnel, Schlick};
 use lobe::microfacet::{Beckmann, BlinnPhongNdf, Ggx, Gtr, Masking};
@@ -82,11 +82,7 @@ fn models() -> Vec<Model> {
 
 #[test]
 fn microfacet_models_obey_every_law() {
-    let all = models();
-    let n = all.len();
-    for m in &all {
-        assert_all_laws(m, n);
-    }
+    assert_every_model_obeys_every_law(&models());
 }
 
 /// With `F = 1` the albedo is the fraction of light that leaves after one bounce: below 1,

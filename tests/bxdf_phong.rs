@@ -4,10 +4,15 @@
 
 mod common;
 
-use common::k_sigma;
-use common::laws::{
-    Model, assert_all_laws, assert_consistent, assert_reciprocal, assert_total, viewer_directions,
+use common::exact::{
+    assert_edge_samples, assert_lobe_choice, assert_lobes_follow_weights, assert_one_sided,
+    assert_reciprocity_bit_exact, assert_values, near_lobe_pairs,
 };
+use common::laws::{
+    Model, assert_albedo_against, assert_all_laws, assert_consistent, assert_reciprocal,
+    assert_total, viewer_directions,
+};
+use common::{angle_f64, f64s, k_sigma};
 use lobe::bxdf::{Bxdf, Lobes, Phong};
 use lobe::verify::{BxdfCheck, albedo_sampled};
 use lobe::{Vec2, Vec3};
@@ -57,21 +62,10 @@ fn sharp_lobes_are_consistent_and_conserve_energy() {
         assert_consistent(&model, 1e-4);
         // Random pairs rarely land in so narrow a lobe: check reciprocity on pairs near the
         // mirror configuration, where the lobe is large.
-        let mut rng = lobe::verify::Pcg32::new(5, 0);
-        let spread = 2.0 / p.sqrt();
-        for _ in 0..2_000 {
-            let wo = lobe::sampling::uniform_hemisphere(rng.next_vec2());
-            let d = (rng.next_vec2() - 0.5) * spread;
-            let wi = (Vec3::new(-wo.x + d.x, -wo.y + d.y, wo.z)).normalize();
-            if wo.z > 0.0 && wi.z > 0.0 {
-                let (f, b) = (model.bxdf.eval(wo, wi), model.bxdf.eval(wi, wo));
-                assert!(
-                    f > 0.0 && f == b,
-                    "{}: f({wo}, {wi}) = {f}, reversed {b}",
-                    model.name
-                );
-            }
-        }
+        let pairs = near_lobe_pairs(p, |wo, d| {
+            Vec3::new(-wo.x + d.x, -wo.y + d.y, wo.z).normalize()
+        });
+        assert_reciprocity_bit_exact(&model.name, model.bxdf.as_ref(), &pairs, true);
         for wo in viewer_directions(&model) {
             let a = albedo_sampled(model.bxdf.as_ref(), wo, &BxdfCheck::default());
             assert!(
@@ -104,22 +98,10 @@ fn albedo_is_kd_plus_ks_at_normal_incidence_and_falls_from_there() {
         for t in angles {
             let wo = common::dir(t, 0.4);
             let a = albedo_sampled(model.bxdf.as_ref(), wo, &BxdfCheck::default());
-            // The estimate averages f32 weights, whose rounding the law suite allows for as
-            // 1e-6 relative; it matters only at p = 10⁵, where the standard error is 2e-8.
-            let allowance = k * a.std_err + 1e-6 * exact;
-            if t == 0.0 {
-                assert!(
-                    (a.mean - exact).abs() <= allowance,
-                    "{}: albedo {a} at normal",
-                    model.name
-                );
-            } else {
-                assert!(
-                    a.mean <= exact + allowance,
-                    "{}: albedo {a} at {t}°",
-                    model.name
-                );
-            }
+            // The f32 rounding the helper allows for matters only at p = 10⁵, where the
+            // standard error is 2e-8.
+            let name = format!("{} at {t}°", model.name);
+            assert_albedo_against(&name, &a, exact, k, t == 0.0);
             // Falls with the viewing angle (within the noise of two estimates).
             assert!(
                 a.mean <= previous + 2.0 * k * a.std_err,
@@ -158,33 +140,9 @@ fn values_match_an_independent_computation() {
             1.531_195_329_005_028_6,
         ),
     ];
-    for (wo, wi, f, pdf) in cases {
-        let (wo, wi) = (wo.normalize(), wi.normalize());
-        let (got_f, got_pdf) = (f64::from(m.eval(wo, wi)), f64::from(m.pdf(wo, wi)));
-        assert!(
-            (got_f - f).abs() <= 1e-5 * f,
-            "f({wo}, {wi}) = {got_f}, expected {f}"
-        );
-        assert!(
-            (got_pdf - pdf).abs() <= 1e-5 * pdf,
-            "pdf({wo}, {wi}) = {got_pdf}, expected {pdf}"
-        );
-    }
-    // One-sided.
+    assert_values("Phong", &m, &cases, 1e-5);
     let (wo, wi) = (Vec3::new(0.6, 0.0, 0.8), Vec3::new(-0.6, 0.0, 0.8));
-    assert!(m.eval(wo, wi) > 0.0);
-    for (a, b) in [
-        (wo, -wi),
-        (-wo, wi),
-        (-wo, -wi),
-        (Vec3::X, wi),
-        (wo, Vec3::Y),
-    ] {
-        assert_eq!(m.eval(a, b), 0.0);
-        assert_eq!(m.pdf(a, b), 0.0);
-    }
-    assert!(m.sample(-wo, Vec2::splat(0.5), 0.5).is_none());
-    assert!(m.sample(Vec3::X, Vec2::splat(0.5), 0.5).is_none());
+    assert_one_sided("Phong", &m, wo, wi);
 }
 
 /// For a large exponent `cos^p α` is computed from `1 − cos α` without cancellation: it
@@ -201,7 +159,7 @@ fn large_exponents_keep_their_shape_near_the_mirror_direction() {
             let axis = r.cross(Vec3::Z).normalize();
             let wi = (r * alpha.cos() + axis.cross(r) * alpha.sin()).normalize();
             // The f64 reference from the actual f32 directions.
-            let angle = angle_f64(Vec3::new(-wo.x, -wo.y, wo.z), wi);
+            let angle = angle_f64(f64s(Vec3::new(-wo.x, -wo.y, wo.z)), f64s(wi));
             let expect = norm * angle.cos().powf(f64::from(p));
             let got = f64::from(m.eval(wo, wi));
             assert!(
@@ -210,24 +168,6 @@ fn large_exponents_keep_their_shape_near_the_mirror_direction() {
             );
         }
     }
-}
-
-/// The angle between two directions, in f64 (as the atan2 of the cross and dot products of
-/// the normalised f64 vectors, which is accurate at small angles).
-fn angle_f64(a: Vec3, b: Vec3) -> f64 {
-    let n = |v: Vec3| {
-        let v = [f64::from(v.x), f64::from(v.y), f64::from(v.z)];
-        let l = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
-        [v[0] / l, v[1] / l, v[2] / l]
-    };
-    let (a, b) = (n(a), n(b));
-    let cross = [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ];
-    let sin = (cross[0] * cross[0] + cross[1] * cross[1] + cross[2] * cross[2]).sqrt();
-    sin.atan2(a[0] * b[0] + a[1] * b[1] + a[2] * b[2])
 }
 
 #[test]
@@ -248,21 +188,7 @@ fn exact_and_grazing_configurations_are_finite() {
                 let (f, pdf) = (m.eval(wo, wi), m.pdf(wo, wi));
                 assert!(f.is_finite() && f >= 0.0 && pdf.is_finite() && pdf >= 0.0);
             }
-            let edges = [0.0_f32, 1e-7, 0.5, 1.0 - 6e-8];
-            for wo in [Vec3::Z, grazing] {
-                for &x in &edges {
-                    for &y in &edges {
-                        for uc in [0.0_f32, 0.4, 1.0 - 6e-8] {
-                            if let Some(s) = m.sample(wo, Vec2::new(x, y), uc) {
-                                assert!(s.wi.z > 0.0 && s.wi.is_finite());
-                                assert!(s.f.is_finite() && s.f >= 0.0);
-                                assert!(s.pdf.is_finite() && s.pdf > 0.0);
-                                assert!(s.weight().is_finite());
-                            }
-                        }
-                    }
-                }
-            }
+            assert_edge_samples("Phong", &m, &[Vec3::Z, grazing]);
         }
     }
 }
@@ -293,29 +219,13 @@ fn spectral_weights_act_per_channel() {
 
 #[test]
 fn lobes_are_those_with_weight() {
-    let lobes = |kd: f32, ks: f32| Phong::new(kd, ks, 10.0).unwrap().lobes();
-    assert_eq!(
-        lobes(0.5, 0.5),
-        Lobes::DIFFUSE_REFLECTION | Lobes::GLOSSY_REFLECTION
-    );
-    assert_eq!(lobes(0.5, 0.0), Lobes::DIFFUSE_REFLECTION);
-    assert_eq!(lobes(0.0, 0.5), Lobes::GLOSSY_REFLECTION);
+    assert_lobes_follow_weights(|kd, ks| Phong::new(kd, ks, 10.0).unwrap().lobes());
     // A black model samples (and reports) its diffuse lobe, with f = 0.
-    assert_eq!(lobes(0.0, 0.0), Lobes::DIFFUSE_REFLECTION);
     let black = Phong::new(0.0_f32, 0.0, 10.0).unwrap();
     let s = black.sample(Vec3::Z, Vec2::new(0.3, 0.6), 0.99).unwrap();
     assert_eq!((s.f, s.lobe), (0.0, Lobes::DIFFUSE_REFLECTION));
     // The choice follows uc: below P_d = 0.25 diffuse, above glossy.
-    let m = Phong::new(0.2_f32, 0.6, 10.0).unwrap();
-    let u = Vec2::new(0.3, 0.6);
-    assert_eq!(
-        m.sample(Vec3::Z, u, 0.2).unwrap().lobe,
-        Lobes::DIFFUSE_REFLECTION
-    );
-    assert_eq!(
-        m.sample(Vec3::Z, u, 0.3).unwrap().lobe,
-        Lobes::GLOSSY_REFLECTION
-    );
+    assert_lobe_choice(&Phong::new(0.2_f32, 0.6, 10.0).unwrap(), 0.2, 0.3);
 }
 
 #[test]

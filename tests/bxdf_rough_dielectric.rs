@@ -5,7 +5,7 @@
 
 mod common;
 
-use common::laws::{Model, assert_all_laws};
+use common::laws::{Model, assert_every_model_obeys_every_law};
 use lobe::bxdf::{Bxdf, RoughDielectric, TransportMode};
 use lobe::microfacet::{Beckmann, Ggx, Masking};
 use lobe::verify::{BxdfCheck, albedo_sampled};
@@ -68,11 +68,7 @@ fn models() -> Vec<Model> {
 
 #[test]
 fn rough_dielectric_obeys_every_law() {
-    let all = models();
-    let n = all.len();
-    for m in &all {
-        assert_all_laws(m, n);
-    }
+    assert_every_model_obeys_every_law(&models());
 }
 
 /// Near-index-matched and extreme interfaces stay total (finite, non-negative) and keep

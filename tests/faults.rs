@@ -21,8 +21,7 @@ use lobe::fresnel::{self, Fresnel, Schlick};
 use lobe::microfacet::{Ggx, Masking, NormalDistribution};
 use lobe::sampling::{cosine_hemisphere, cosine_hemisphere_pdf};
 use lobe::verify::{
-    Chi2Config, Config, Law, NdfCheck, NdfConfig, Report, albedo, check_bxdf, check_ndf, chi2_bxdf,
-    sidak,
+    Chi2Config, Config, Law, Report, albedo, check_bxdf, check_ndf, chi2_bxdf, sidak,
 };
 use lobe::{Alpha, Eta, Vec2, Vec3};
 
@@ -51,16 +50,22 @@ fn config() -> Config {
 }
 
 /// The distributions' budget, with the proposal stretched to their width.
-fn ndf_config(alpha: f32) -> NdfConfig {
-    NdfConfig {
-        check: NdfCheck {
-            samples: 60_000,
-            ..NdfCheck::stretched(alpha, alpha)
-        },
+fn ndf_config(alpha: f32) -> Config {
+    Config {
+        integral_samples: 60_000,
+        stretch: Vec2::splat(alpha),
         chi2_samples: 50_000,
         significance: sidak(0.01, RUNS),
-        ..NdfConfig::default()
+        ..Config::default()
     }
+}
+
+/// Runs every law on `bxdf` at the corpus budget, prints the report, and asserts that exactly
+/// the laws in `caught_by` failed (see [`assert_caught`]).
+fn check_caught<B: Bxdf + ?Sized>(name: &str, bxdf: &B, caught_by: &[Law]) -> Report {
+    let report = check_bxdf(name, bxdf, &config());
+    assert_caught(&report, caught_by);
+    report
 }
 
 /// Prints the report and asserts that exactly the laws in `caught_by` failed: each of them
@@ -96,6 +101,18 @@ fn assert_caught_except(report: &Report, caught_by: &[Law], unjudged: &[Law]) {
 /// The figure of `law` in `report`.
 fn figure(report: &Report, law: Law) -> f64 {
     report.get(law).map_or(f64::NAN, |r| r.figure)
+}
+
+/// A reflection sample of `wi` with value `f`, or `None` where the density is not positive
+/// and finite.
+fn reflection(wi: Vec3, f: f32, pdf: f32, lobe: Lobes) -> Option<BxdfSample<f32>> {
+    (pdf > 0.0 && pdf.is_finite()).then_some(BxdfSample {
+        wi,
+        f,
+        pdf,
+        lobe,
+        eta: 1.0,
+    })
 }
 
 fn alpha(a: f32) -> Alpha {
@@ -258,13 +275,7 @@ impl Bxdf for SchlickCoated {
             (cosine_hemisphere(u), Lobes::DIFFUSE_REFLECTION)
         };
         let pdf = self.pdf(wo, wi);
-        (pdf > 0.0 && pdf.is_finite()).then(|| BxdfSample {
-            wi,
-            f: self.eval(wo, wi),
-            pdf,
-            lobe,
-            eta: 1.0,
-        })
+        reflection(wi, self.eval(wo, wi), pdf, lobe)
     }
     fn pdf(&self, wo: Vec3, wi: Vec3) -> f32 {
         if !(wo.z > 0.0 && wi.z > 0.0) {
@@ -291,20 +302,18 @@ impl Bxdf for SchlickCoated {
 /// 0.04 — so coat plus base exceed 1 at every angle but the normal.
 #[test]
 fn schlick_one_minus_cos5_breaks_the_energy_bound_of_a_coupled_coat() {
-    let report = check_bxdf(
+    let report = check_caught(
         "Schlick 1 − cos⁵ coat over ρ = 0.8",
         &SchlickCoated::new(true),
-        &config(),
+        &[Law::EnergyBound],
     );
-    assert_caught(&report, &[Law::EnergyBound]);
     assert!(figure(&report, Law::EnergyBound) > 1.2);
     // The bare coat with the slipped term breaks no law: the slip is a value error there.
-    let bare = check_bxdf(
+    check_caught(
         "Schlick 1 − cos⁵, bare coat",
         &SchlickCoated::new(true).coat,
-        &config(),
+        &[],
     );
-    assert_caught(&bare, &[]);
 }
 
 // ---------------------------------------------------------------------------------------
@@ -420,13 +429,7 @@ impl Bxdf for BuggyGlossy {
                 let wi = reflect(wo, m);
                 // Missing: `if !(wi.z > 0.0) { return None; }`
                 let pdf = self.sampler_density(wo, m) / (4.0 * wo.dot(m));
-                (pdf > 0.0 && pdf.is_finite()).then(|| BxdfSample {
-                    wi,
-                    f: self.good.eval(wo, wi),
-                    pdf,
-                    lobe: Lobes::GLOSSY_REFLECTION,
-                    eta: 1.0,
-                })
+                reflection(wi, self.good.eval(wo, wi), pdf, Lobes::GLOSSY_REFLECTION)
             }
             _ => {
                 let mut s = self.good.sample(wo, u, uc)?;
@@ -470,12 +473,11 @@ impl Bxdf for BuggyGlossy {
 /// so the energy bound and the two albedo estimators agree.
 #[test]
 fn pdf_without_reflection_jacobian_fails_chi_square_and_consistency() {
-    let report = check_bxdf(
+    let report = check_caught(
         "GGX α=0.3, pdf() without 1/(4 wo·h)",
         &buggy_glossy(0.3, GlossyBug::PdfForgetsJacobian),
-        &config(),
+        &[Law::Sampling, Law::Consistency],
     );
-    assert_caught(&report, &[Law::Sampling, Law::Consistency]);
     assert!(figure(&report, Law::Sampling) < 1e-20);
 }
 
@@ -485,12 +487,11 @@ fn pdf_without_reflection_jacobian_fails_chi_square_and_consistency() {
 /// densities agree, which is why it cannot be the only check of a sampler.
 #[test]
 fn density_without_reflection_jacobian_fails_chi_square_and_albedo_agreement() {
-    let report = check_bxdf(
+    check_caught(
         "GGX α=0.3, density without 1/(4 wo·h)",
         &buggy_glossy(0.3, GlossyBug::DensityForgetsJacobian),
-        &config(),
+        &[Law::Sampling, Law::AlbedoEstimators],
     );
-    assert_caught(&report, &[Law::Sampling, Law::AlbedoEstimators]);
 }
 
 /// **6. Fresnel evaluated at `wo·n` instead of `wo·h`** → **reciprocity**: `F(cos θo)` is not
@@ -498,12 +499,11 @@ fn density_without_reflection_jacobian_fails_chi_square_and_albedo_agreement() {
 /// `sample()` returns the same broken value as `eval`).
 #[test]
 fn fresnel_at_the_macro_normal_fails_reciprocity() {
-    let report = check_bxdf(
+    let report = check_caught(
         "GGX α=0.3, F(wo·n)",
         &buggy_glossy(0.3, GlossyBug::FresnelAtNormal),
-        &config(),
+        &[Law::Reciprocity],
     );
-    assert_caught(&report, &[Law::Reciprocity]);
     assert!(figure(&report, Law::Reciprocity) > 0.5);
 }
 
@@ -521,8 +521,7 @@ fn nan_at_the_horizon_fails_positivity() {
     let model = buggy_glossy(0.3, GlossyBug::HorizonGuardInclusive);
     let grazing = Vec3::new(1.0, 0.0, 0.0);
     assert!(model.eval(Vec3::new(0.0, 0.6, 0.8), grazing).is_nan());
-    let report = check_bxdf("GGX α=0.3, horizon guard >=", &model, &config());
-    assert_caught(&report, &[Law::Positivity]);
+    check_caught("GGX α=0.3, horizon guard >=", &model, &[Law::Positivity]);
 }
 
 /// **8, by property test.** The bug that `positivity` misses is found by a proptest over
@@ -565,12 +564,11 @@ fn nan_at_the_horizon_fails_a_totality_property_test() {
 /// returns it too, and it only lowers the albedo, so every other law holds.
 #[test]
 fn negative_lobe_fails_positivity() {
-    let report = check_bxdf(
+    let report = check_caught(
         "GGX α=0.3, f − 0.01",
         &buggy_glossy(0.3, GlossyBug::Negative),
-        &config(),
+        &[Law::Positivity],
     );
-    assert_caught(&report, &[Law::Positivity]);
     assert!(figure(&report, Law::Positivity) > 100.0);
 }
 
@@ -587,8 +585,11 @@ fn sample_below_the_horizon_fails_chi_square_zero_bins() {
         Masking::HeightCorrelated,
         Schlick::new(0.04).unwrap(),
     );
-    let report = check_bxdf("GGX α=0.8, samples below the horizon", &model, &config());
-    assert_caught(&report, &[Law::Sampling, Law::Consistency]);
+    check_caught(
+        "GGX α=0.8, samples below the horizon",
+        &model,
+        &[Law::Sampling, Law::Consistency],
+    );
     // The chi-square test itself names the zero-density bins (the law report's one line
     // keeps only the statistic).
     let chi = Chi2Config {
@@ -607,12 +608,11 @@ fn sample_below_the_horizon_fails_chi_square_zero_bins() {
 /// sampler's directions are untouched.
 #[test]
 fn sample_value_different_from_eval_fails_consistency() {
-    let report = check_bxdf(
+    let report = check_caught(
         "GGX α=0.3, sample().f with separable masking",
         &buggy_glossy(0.3, GlossyBug::SampleSeparableMasking),
-        &config(),
+        &[Law::Consistency],
     );
-    assert_caught(&report, &[Law::Consistency]);
     assert!(figure(&report, Law::Consistency) > 0.1);
 }
 
@@ -659,13 +659,7 @@ impl Bxdf for PhongLobe {
             return None;
         }
         let pdf = self.pdf(wo, wi);
-        (pdf > 0.0 && pdf.is_finite()).then(|| BxdfSample {
-            wi,
-            f: self.eval(wo, wi),
-            pdf,
-            lobe: Lobes::GLOSSY_REFLECTION,
-            eta: 1.0,
-        })
+        reflection(wi, self.eval(wo, wi), pdf, Lobes::GLOSSY_REFLECTION)
     }
     fn pdf(&self, wo: Vec3, wi: Vec3) -> f32 {
         if !(wo.z > 0.0 && wi.z > 0.0) {
@@ -695,13 +689,9 @@ fn nan_from_an_unclamped_cosine_fails_positivity() {
         n: 20.5,
         clamp: false,
     };
-    let report = check_bxdf(
+    check_caught(
         "Phong n=20.5, powf of a negative cosine",
         &unclamped,
-        &config(),
-    );
-    assert_caught(
-        &report,
         &[Law::Positivity, Law::Reciprocity, Law::AlbedoEstimators],
     );
     // At θo = 60° the cosine estimate is NaN.
@@ -760,13 +750,7 @@ impl Bxdf for BuggyDiffuse {
             }
             let wi = Vec3::new(d.x, d.y, (1.0 - r2).sqrt());
             let pdf = cosine_hemisphere_pdf(wi.z);
-            return (pdf > 0.0).then(|| BxdfSample {
-                wi,
-                f: self.eval(wo, wi),
-                pdf,
-                lobe: Lobes::DIFFUSE_REFLECTION,
-                eta: 1.0,
-            });
+            return reflection(wi, self.eval(wo, wi), pdf, Lobes::DIFFUSE_REFLECTION);
         }
         let mut s = self.good.sample(wo, u, uc)?;
         s.f = self.eval(wo, s.wi);
@@ -792,12 +776,11 @@ impl Bxdf for BuggyDiffuse {
 /// passes.
 #[test]
 fn pdf_ten_percent_off_fails_chi_square() {
-    let report = check_bxdf(
+    let report = check_caught(
         "Lambert ρ=0.8, pdf × 1.1",
         &buggy_diffuse(0.8, DiffuseBug::PdfTenPercentHigh),
-        &config(),
+        &[Law::Sampling, Law::AlbedoEstimators],
     );
-    assert_caught(&report, &[Law::Sampling, Law::AlbedoEstimators]);
     assert!(figure(&report, Law::Sampling) < 1e-20);
 }
 
@@ -805,12 +788,11 @@ fn pdf_ten_percent_off_fails_chi_square() {
 /// estimators measure 1.05 and agree; every other law holds.
 #[test]
 fn energy_gaining_lobe_fails_the_energy_bound() {
-    let report = check_bxdf(
+    let report = check_caught(
         "Lambert × 1.05",
         &buggy_diffuse(1.0, DiffuseBug::Gains5Percent),
-        &config(),
+        &[Law::EnergyBound],
     );
-    assert_caught(&report, &[Law::EnergyBound]);
     let r = report.get(Law::EnergyBound).unwrap();
     assert!((r.figure - 1.05).abs() < 1e-3, "{r}");
 }
@@ -822,12 +804,11 @@ fn energy_gaining_lobe_fails_the_energy_bound() {
 /// 0.8).
 #[test]
 fn sampler_failing_more_than_its_pdf_admits_fails_chi_square() {
-    let report = check_bxdf(
+    let report = check_caught(
         "Lambert ρ=0.8, rejection without the loop",
         &buggy_diffuse(0.8, DiffuseBug::RejectionWithoutLoop),
-        &config(),
+        &[Law::Sampling, Law::AlbedoEstimators],
     );
-    assert_caught(&report, &[Law::Sampling, Law::AlbedoEstimators]);
     let r = report.get(Law::Sampling).unwrap();
     assert!(r.figure < 1e-20, "{r}");
 }
@@ -882,37 +863,33 @@ fn correct_counterparts_pass_every_law() {
         &ndf_config(NDF_ALPHA),
     );
     assert_caught(&report, &[]);
-    let report = check_bxdf(
+    check_caught(
         "Schlick (1 − cos)⁵ coat over ρ = 0.8",
         &SchlickCoated::new(false),
-        &config(),
+        &[],
     );
-    assert_caught(&report, &[]);
     for a in [0.3, 0.8] {
-        let report = check_bxdf(
+        check_caught(
             &format!("GGX α={a}, Schlick 0.04"),
             &buggy_glossy(a, GlossyBug::None),
-            &config(),
+            &[],
         );
-        assert_caught(&report, &[]);
     }
-    let report = check_bxdf(
+    check_caught(
         "Phong n=20.5",
         &PhongLobe {
             ks: 0.9,
             n: 20.5,
             clamp: true,
         },
-        &config(),
+        &[],
     );
-    assert_caught(&report, &[]);
     for rho in [0.8, 1.0] {
-        let report = check_bxdf(
+        check_caught(
             &format!("Lambert ρ={rho}"),
             &buggy_diffuse(rho, DiffuseBug::None),
-            &config(),
+            &[],
         );
-        assert_caught(&report, &[]);
     }
     let eta = 1.5_f32;
     let radiance = RoughDielectric::new(Ggx::isotropic(alpha(0.3)), Eta::new(eta).unwrap());

@@ -1,11 +1,12 @@
 //! Fresnel terms: bounds over adversarial inputs, identities against independent `f64`
 //! formulas, the conductor approximation's measured error, and every record of the Mitsuba 3
 //! reference set (`tests/data/mitsuba_fresnel.json`, conventions and tolerances in
-//! `tests/data/mitsuba_CONVENTIONS.md`, §2 and §5).
+//! `tests/data/mitsuba_CONVENTIONS.md`, §2 and §5), with Mitsuba's gold preset from
+//! `tests/data/mitsuba_presets.json`.
 
 mod common;
 
-use common::reference::{field, load};
+use common::reference::{field, field32, load};
 
 use lobe::fresnel::{self, DielectricFresnel};
 use lobe::{ComplexIor, Eta, Spectrum, Vec3, Vec4};
@@ -423,11 +424,26 @@ fn conductor_without_extinction_is_the_dielectric() {
     eprintln!("conductor(κ=0) vs dielectric: max difference {worst:.3} of the round-off bound");
 }
 
+/// A conductor preset of Mitsuba's (`tests/data/mitsuba_presets.json`): its RGB `(η, κ)`.
+fn mitsuba_preset(name: &str) -> (Vec3, Vec3) {
+    let (records, _) = load(
+        include_str!("data/mitsuba_presets.json"),
+        "mitsuba_presets.json",
+    );
+    let r = records
+        .iter()
+        .find(|r| r["name"] == name)
+        .unwrap_or_else(|| panic!("no preset {name}"));
+    let rgb = |part: &str| {
+        let c = |channel: &str| field32(r, &format!("{part}_{channel}"));
+        Vec3::new(c("r"), c("g"), c("b"))
+    };
+    (rgb("eta"), rgb("k"))
+}
+
 #[test]
 fn conductor_spectra_are_channelwise() {
-    // Mitsuba's Au preset.
-    let eta3 = Vec3::new(0.143_036, 0.375_307, 1.442_05);
-    let k3 = Vec3::new(3.983, 2.385_56, 1.603_36);
+    let (eta3, k3) = mitsuba_preset("Au");
     let gold = ComplexIor::new(eta3, k3).unwrap();
     let gold4 = ComplexIor::new(eta3.extend(0.5), k3.extend(0.0)).unwrap();
     for c in [1.0f32, 0.7, 0.2, 1e-3, -0.3] {

@@ -10,7 +10,7 @@ use lobe::microfacet::{
     Beckmann, BeckmannMasking, BlinnPhongNdf, Ggx, Gtr, NormalDistribution, SampleDCos,
 };
 use lobe::verify::{
-    Chi2Config, Estimate, NdfCheck, chi2_normals, d_normalization, projected_area,
+    Chi2Config, Config, Estimate, chi2_normals, d_normalization, projected_area,
     projected_area_masked, sidak, visible_normalization,
 };
 use lobe::{Alpha, Vec2, Vec3};
@@ -109,18 +109,20 @@ fn cases() -> Vec<Case> {
     all
 }
 
-fn check_for(w: (f32, f32)) -> NdfCheck {
-    NdfCheck {
-        samples: 300_000,
-        ..NdfCheck::stretched(w.0, w.1)
+fn check_for(w: (f32, f32)) -> Config {
+    Config {
+        integral_samples: 300_000,
+        stretch: Vec2::new(w.0, w.1),
+        ..Config::default()
     }
 }
 
 /// A larger budget, for the checks whose figure is quoted in the docs.
-fn precise_check_for(w: (f32, f32)) -> NdfCheck {
-    NdfCheck {
-        samples: 1_000_000,
-        ..NdfCheck::stretched(w.0, w.1)
+fn precise_check_for(w: (f32, f32)) -> Config {
+    Config {
+        integral_samples: 1_000_000,
+        stretch: Vec2::new(w.0, w.1),
+        ..Config::default()
     }
 }
 

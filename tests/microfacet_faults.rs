@@ -7,7 +7,7 @@ use common::buggy_ggx::{BuggyNdf, NdfBug as Bug};
 use common::{dir, k_sigma};
 use lobe::microfacet::{Ggx, NormalDistribution};
 use lobe::verify::{
-    Chi2Config, NdfCheck, chi2_normals, d_normalization, projected_area, visible_normalization,
+    Chi2Config, Config, chi2_normals, d_normalization, projected_area, visible_normalization,
 };
 use lobe::{Alpha, Vec2, Vec3};
 
@@ -17,10 +17,11 @@ fn buggy(bug: Bug) -> BuggyNdf {
     BuggyNdf::new(ALPHA, bug)
 }
 
-fn check() -> NdfCheck {
-    NdfCheck {
-        samples: 300_000,
-        ..NdfCheck::stretched(ALPHA, ALPHA)
+fn check() -> Config {
+    Config {
+        integral_samples: 300_000,
+        stretch: Vec2::splat(ALPHA),
+        ..Config::default()
     }
 }
 

@@ -51,7 +51,9 @@
 
 mod common;
 
-use common::reference::{Dev, field, field32, load, vec_field};
+use common::reference::{
+    Dev, Kind, assert_no_failures, field, field32, load, print_devs, vec_field,
+};
 
 use lobe::microfacet::{Beckmann, BeckmannMasking, Ggx, NormalDistribution, Sampling, View};
 use lobe::{Alpha, Vec2, Vec3};
@@ -83,29 +85,6 @@ const QUANTITIES: [&str; 6] = [
 
 fn alpha(r: &Value, name: &str) -> Alpha {
     Alpha::new(field32(r, name)).unwrap_or_else(|e| panic!("{name} of {r}: {e}"))
-}
-
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Kind {
-    Ggx,
-    Beckmann,
-}
-
-impl Kind {
-    fn of(r: &Value) -> Self {
-        match r["distribution"].as_str() {
-            Some("ggx") => Self::Ggx,
-            Some("beckmann") => Self::Beckmann,
-            other => panic!("unknown distribution {other:?} in {r}"),
-        }
-    }
-
-    fn name(self) -> &'static str {
-        match self {
-            Self::Ggx => "ggx",
-            Self::Beckmann => "beckmann",
-        }
-    }
 }
 
 /// GGX with the record's widths (`alpha_u` along local x, `alpha_v` along y).
@@ -222,22 +201,7 @@ impl Report {
     fn check(&mut self, category: &str, ctx: &str, lobe: f64, oracle: f64) {
         let err = (lobe - oracle).abs();
         let fail = !(err <= ATOL + RTOL * oracle.abs());
-        let tiny = oracle == 0.0 && lobe != 0.0 && !fail;
-        let dev = self.dev(category);
-        dev.values += 1;
-        dev.max_abs = dev.max_abs.max(err);
-        if oracle != 0.0 {
-            dev.max_rel = dev.max_rel.max(err / oracle.abs());
-        } else {
-            dev.zeros += 1;
-        }
-        if tiny {
-            dev.tiny_where_zero += 1;
-        }
-        if fail {
-            dev.failures += 1;
-        }
-        if tiny {
+        if self.dev(category).add(lobe, oracle, fail) {
             self.tiny_where_zero
                 .push(format!("{ctx}: {category}: lobe {lobe:e}, mitsuba 0"));
         }
@@ -260,9 +224,7 @@ impl Report {
 
     fn print(&self, title: &str) {
         eprintln!("{title}: {} records checked", self.records);
-        for (category, dev) in &self.devs {
-            eprintln!("  {category}: {dev}");
-        }
+        print_devs("  ", self.devs.iter().map(|(c, d)| (c, d)));
         for note in &self.tiny_where_zero {
             eprintln!("  (within atol) {note}");
         }
@@ -272,24 +234,27 @@ impl Report {
     }
 
     fn assert_clean(&self) {
-        assert!(
-            self.failures.is_empty(),
-            "{} failures:\n{}",
-            self.failures.len(),
-            self.failures.join("\n")
-        );
+        assert_no_failures(&self.failures);
     }
+}
+
+/// The records of the kinds in `kinds`, with their index and kind.
+fn of_kinds<'a>(
+    records: &'a [Value],
+    kinds: &'a [Kind],
+) -> impl Iterator<Item = (usize, &'a Value, Kind)> + 'a {
+    records
+        .iter()
+        .enumerate()
+        .map(|(i, r)| (i, r, Kind::of(r)))
+        .filter(|(_, _, kind)| kinds.contains(kind))
 }
 
 /// Compares `values(record)` with every `microfacet.json` record of the kinds in `kinds`.
 fn check_microfacet(kinds: &[Kind], values: impl Fn(Kind, &Value) -> [f64; 6]) -> Report {
     let (records, _) = load(MICROFACET, "mitsuba_microfacet.json");
     let mut rep = Report::default();
-    for (i, r) in records.iter().enumerate() {
-        let kind = Kind::of(r);
-        if !kinds.contains(&kind) {
-            continue;
-        }
+    for (i, r, kind) in of_kinds(&records, kinds) {
         rep.records += 1;
         let ctx = context(i, r);
         let lobe = values(kind, r);
@@ -318,11 +283,7 @@ fn check_samples(
     let mut rep = Report::default();
     let mut max_unit_err = 0f32;
     let mut max_angle_to_mitsuba = 0f32;
-    for (i, r) in records.iter().enumerate() {
-        let kind = Kind::of(r);
-        if !kinds.contains(&kind) {
-            continue;
-        }
+    for (i, r, kind) in of_kinds(&records, kinds) {
         rep.records += 1;
         let ctx = context(i, r);
         let wi = vec_field(r, "wi");

@@ -36,6 +36,18 @@ fn assert_unit(w: Vec3) {
     assert!((len - 1.0).abs() < 1e-6, "|{w:?}| = {len}");
 }
 
+/// How many of `xs` satisfy `p`.
+fn count<T: Copy>(xs: &[T], p: impl Fn(T) -> bool) -> usize {
+    xs.iter().filter(|&&x| p(x)).count()
+}
+
+/// `N` directions of `strategy`, each asserted to be of unit length.
+fn draw_directions<S: Strategy<Value = Vec3>>(strategy: S) -> Vec<Vec3> {
+    let ws = draw(strategy, N);
+    ws.iter().copied().for_each(assert_unit);
+    ws
+}
+
 /// A seeded configuration for the property tests that writes no regression files.
 fn config(cases: u32) -> Config {
     Config {
@@ -48,8 +60,7 @@ fn config(cases: u32) -> Config {
 
 #[test]
 fn directions_are_uniform_on_the_sphere() {
-    let ws = draw(directions(), N);
-    ws.iter().copied().for_each(assert_unit);
+    let ws = draw_directions(directions());
     // Uniform on the sphere: z, x and y are uniform in [−1, 1] with variance 1/3, mean 0.
     let sigma = (1.0 / 3.0 / N as f64).sqrt();
     for axis in 0..3 {
@@ -66,9 +77,8 @@ fn directions_are_uniform_on_the_sphere() {
 
 #[test]
 fn upper_directions_are_strictly_above() {
-    let ws = draw(upper_directions(), N);
+    let ws = draw_directions(upper_directions());
     for &w in &ws {
-        assert_unit(w);
         assert!(w.z > 0.0 && w.z <= 1.0, "{w:?}");
     }
     // Uniform in solid angle: cos θ uniform in (0, 1].
@@ -81,16 +91,13 @@ fn upper_directions_are_strictly_above() {
 
 #[test]
 fn grazing_directions_stay_within_1e_7_and_1e_2_of_the_horizon() {
-    let ws = draw(grazing_directions(), N);
-    let (mut below, mut tiny, mut wide) = (0, 0, 0);
-    for &w in &ws {
-        assert_unit(w);
-        let c = w.z.abs();
-        assert!((0.999e-7..=1.001e-2).contains(&c), "{w:?}");
-        below += usize::from(w.z < 0.0);
-        tiny += usize::from(c < 1e-6);
-        wide += usize::from(c > 1e-3);
+    let ws = draw_directions(grazing_directions());
+    for w in &ws {
+        assert!((0.999e-7..=1.001e-2).contains(&w.z.abs()), "{w:?}");
     }
+    let below = count(&ws, |w| w.z < 0.0);
+    let tiny = count(&ws, |w| w.z.abs() < 1e-6);
+    let wide = count(&ws, |w| w.z.abs() > 1e-3);
     // Both sides, and log-uniform: each decade holds about a fifth.
     assert!(below > N / 3 && below < 2 * N / 3, "{below} below");
     assert!(
@@ -101,16 +108,14 @@ fn grazing_directions_stay_within_1e_7_and_1e_2_of_the_horizon() {
 
 #[test]
 fn near_normal_directions_are_near_either_pole() {
-    let ws = draw(near_normal_directions(), N);
-    let (mut below, mut exact, mut tiny) = (0, 0, 0);
+    let ws = draw_directions(near_normal_directions());
+    let sin = |w: Vec3| f64::from(w.x).hypot(f64::from(w.y));
     for &w in &ws {
-        assert_unit(w);
-        let sin = f64::from(w.x).hypot(f64::from(w.y));
-        assert!(sin <= 0.1001, "{w:?}");
-        below += usize::from(w.z < 0.0);
-        exact += usize::from(sin == 0.0);
-        tiny += usize::from(sin > 0.0 && sin < 1e-6);
+        assert!(sin(w) <= 0.1001, "{w:?}");
     }
+    let below = count(&ws, |w| w.z < 0.0);
+    let exact = count(&ws, |w| sin(w) == 0.0);
+    let tiny = count(&ws, |w| sin(w) > 0.0 && sin(w) < 1e-6);
     assert!(below > N / 3 && below < 2 * N / 3, "{below} below");
     assert!(exact > N / 20, "{exact} exactly on the normal");
     assert!(tiny > N / 20, "{tiny} within 1e-6 of the normal");
@@ -118,18 +123,11 @@ fn near_normal_directions_are_near_either_pole() {
 
 #[test]
 fn adversarial_directions_include_the_horizon_itself() {
-    let ws = draw(adversarial_directions(), N);
-    ws.iter().copied().for_each(assert_unit);
-    let horizon = ws.iter().filter(|w| w.z == 0.0).count();
-    let negative_zero = ws
-        .iter()
-        .filter(|w| w.z == 0.0 && w.z.is_sign_negative())
-        .count();
-    let grazing = ws
-        .iter()
-        .filter(|w| w.z != 0.0 && w.z.abs() <= 1e-2)
-        .count();
-    let poles = ws.iter().filter(|w| w.z.abs() == 1.0).count();
+    let ws = draw_directions(adversarial_directions());
+    let horizon = count(&ws, |w| w.z == 0.0);
+    let negative_zero = count(&ws, |w| w.z == 0.0 && w.z.is_sign_negative());
+    let grazing = count(&ws, |w| w.z != 0.0 && w.z.abs() <= 1e-2);
+    let poles = count(&ws, |w| w.z.abs() == 1.0);
     assert!(
         horizon > N / 20 && negative_zero > 0,
         "{horizon} on the horizon"
@@ -144,13 +142,12 @@ fn alphas_cover_the_accepted_range_log_uniformly() {
     for &a in &alphas {
         assert!((Alpha::MIN..=Alpha::MAX).contains(&a), "{a}");
     }
-    let count = |p: &dyn Fn(f32) -> bool| alphas.iter().filter(|&&a| p(a)).count();
-    assert!(count(&|a| a == Alpha::MIN) > N / 20);
-    assert!(count(&|a| a == Alpha::MAX) > N / 20);
+    assert!(count(&alphas, |a| a == Alpha::MIN) > N / 20);
+    assert!(count(&alphas, |a| a == Alpha::MAX) > N / 20);
     // Five decades, log-uniform: each holds about 16% of the draws.
     for decade in -4..1 {
         let lo = 10f32.powi(decade);
-        let share = count(&|a| a > lo && a < 10.0 * lo) as f64 / N as f64;
+        let share = count(&alphas, |a| a > lo && a < 10.0 * lo) as f64 / N as f64;
         assert!(
             (0.1..0.25).contains(&share),
             "[1e{decade}, 1e{}]: {share}",
@@ -165,24 +162,23 @@ fn etas_cover_the_range_index_matching_and_common_media() {
     for &e in &etas {
         assert!((Eta::MIN..=Eta::MAX).contains(&e), "{e}");
     }
-    let count = |p: &dyn Fn(f32) -> bool| etas.iter().filter(|&&e| p(e)).count();
-    assert!(count(&|e| e < 1e-2) > N / 40, "far below 1");
-    assert!(count(&|e| e > 1e2) > N / 40, "far above 1");
-    assert!(count(&|e| e == 1.0) > N / 50, "exactly 1");
+    assert!(count(&etas, |e| e < 1e-2) > N / 40, "far below 1");
+    assert!(count(&etas, |e| e > 1e2) > N / 40, "far above 1");
+    assert!(count(&etas, |e| e == 1.0) > N / 50, "exactly 1");
     assert!(
-        count(&|e| e != 1.0 && (e - 1.0).abs() < 1e-5) > N / 50,
+        count(&etas, |e| e != 1.0 && (e - 1.0).abs() < 1e-5) > N / 50,
         "near 1"
     );
     assert!(
-        count(&|e| e > 1.0 && e < 1.0 + 1e-2) > N / 50,
+        count(&etas, |e| e > 1.0 && e < 1.0 + 1e-2) > N / 50,
         "just above 1"
     );
     assert!(
-        count(&|e| e < 1.0 && e > 1.0 - 1e-2) > N / 50,
+        count(&etas, |e| e < 1.0 && e > 1.0 - 1e-2) > N / 50,
         "just below 1"
     );
     for common in [1.33, 1.5, 2.4, 1.0 / 1.33, 1.0 / 1.5, 1.0 / 2.4] {
-        assert!(count(&|e| e == common) > N / 50, "{common}");
+        assert!(count(&etas, |e| e == common) > N / 50, "{common}");
     }
 }
 

@@ -54,12 +54,28 @@ fn upper(w: Vec3, pdf: f32) -> f64 {
     if w.z >= 0.0 { f64::from(pdf) } else { 0.0 }
 }
 
+/// The uniform density of the upper hemisphere.
+fn uniform_upper(w: Vec3) -> f64 {
+    upper(w, uniform_hemisphere_pdf())
+}
+
+/// The chi-square test of a warp that always returns a direction against `pdf`.
+fn warp_chi2(warp: impl Fn(Vec2) -> Vec3, pdf: impl Fn(Vec3) -> f64, seed: u64) -> Chi2Report {
+    chi2_sphere(|u| Some(warp(u)), pdf, &config(seed))
+}
+
+/// Cosine-distributed directions from half the draws (`u.x ≥ ½`, rescaled), `None` from the
+/// other half.
+fn half_failing(u: Vec2) -> Option<Vec3> {
+    (u.x >= 0.5).then(|| cosine_hemisphere(Vec2::new(2.0 * u.x - 1.0, u.y)))
+}
+
 #[test]
 fn cosine_hemisphere_matches_its_pdf() {
-    let report = chi2_sphere(
-        |u| Some(cosine_hemisphere(u)),
+    let report = warp_chi2(
+        cosine_hemisphere,
         |w| f64::from(cosine_hemisphere_pdf(w.z)),
-        &config(11),
+        11,
     );
     assert_passes("cosine hemisphere", &report);
 }
@@ -80,21 +96,13 @@ fn cosine_power_hemisphere_matches_its_pdf() {
 
 #[test]
 fn uniform_hemisphere_matches_its_pdf() {
-    let report = chi2_sphere(
-        |u| Some(uniform_hemisphere(u)),
-        |w| upper(w, uniform_hemisphere_pdf()),
-        &config(12),
-    );
+    let report = warp_chi2(uniform_hemisphere, uniform_upper, 12);
     assert_passes("uniform hemisphere", &report);
 }
 
 #[test]
 fn uniform_sphere_matches_its_pdf() {
-    let report = chi2_sphere(
-        |u| Some(uniform_sphere(u)),
-        |_| f64::from(uniform_sphere_pdf()),
-        &config(13),
-    );
+    let report = warp_chi2(uniform_sphere, |_| f64::from(uniform_sphere_pdf()), 13);
     assert_passes("uniform sphere", &report);
 }
 
@@ -110,7 +118,7 @@ fn concentric_disk_is_uniform() {
         let s = (2.0 - r2).sqrt();
         Some(Vec3::new(p.x * s, p.y * s, 1.0 - r2))
     };
-    let report = chi2_sphere(lift, |w| upper(w, uniform_hemisphere_pdf()), &config(14));
+    let report = chi2_sphere(lift, uniform_upper, &config(14));
     assert_passes("concentric disk (equal-area lift)", &report);
 }
 
@@ -140,10 +148,8 @@ fn uniform_cone_matches_its_pdf() {
 fn sampler_that_fails_half_the_time_matches_a_halved_pdf() {
     // The directions are cosine-distributed, but half the draws return None: the density
     // integrates to ½ and the no-sample bin expects N/2.
-    let sampler =
-        |u: Vec2| (u.x >= 0.5).then(|| cosine_hemisphere(Vec2::new(2.0 * u.x - 1.0, u.y)));
     let report = chi2_sphere(
-        sampler,
+        half_failing,
         |w| 0.5 * f64::from(cosine_hemisphere_pdf(w.z)),
         &config(18),
     );
@@ -157,11 +163,7 @@ fn sampler_that_fails_half_the_time_matches_a_halved_pdf() {
 
 #[test]
 fn cosine_sampling_is_rejected_against_the_uniform_hemisphere_pdf() {
-    let report = chi2_sphere(
-        |u| Some(cosine_hemisphere(u)),
-        |w| upper(w, uniform_hemisphere_pdf()),
-        &config(21),
-    );
+    let report = warp_chi2(cosine_hemisphere, uniform_upper, 21);
     assert_rejected("cosine samples vs uniform hemisphere pdf", &report);
     assert!(report.p_value < report.significance);
     // No outright failure: it is the statistic that rejects.
@@ -215,10 +217,8 @@ fn samples_where_the_pdf_is_zero_are_rejected() {
 
 #[test]
 fn sampler_that_fails_half_the_time_is_rejected_against_its_full_pdf() {
-    let sampler =
-        |u: Vec2| (u.x >= 0.5).then(|| cosine_hemisphere(Vec2::new(2.0 * u.x - 1.0, u.y)));
     let report = chi2_sphere(
-        sampler,
+        half_failing,
         |w| f64::from(cosine_hemisphere_pdf(w.z)),
         &config(24),
     );

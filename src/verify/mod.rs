@@ -6,23 +6,42 @@
 //! tests.
 //!
 //! A law is a claim about an integral or an identity, so a check is a measurement, not a
-//! comparison against a hand-picked epsilon:
+//! comparison against a hand-picked epsilon. The module has two rooms (its items are all
+//! public here, at `lobe::verify::…`):
+//!
+//! **The laws**, one subject a file, each measuring, reporting and checking its subject:
+//!
+//! * [`check_bxdf`] runs every law of a BSDF that applies: [`positivity`], [`reciprocity`],
+//!   [`energy_bound`] (the directional [`albedo`] by two independent estimators,
+//!   [`albedo_sampled`] and [`albedo_cosine`]), [`sampling_chi2`] ([`chi2_bxdf`] per viewer
+//!   direction) and [`consistency`] ([`sample_consistency`]). A model of any
+//!   [`Spectrum`](crate::Spectrum) — `f32`, RGB `Vec3`, four wavelengths `Vec4` — is checked
+//!   per channel, each report naming its worst channel; [`Channel`] views one channel as a
+//!   monochrome model for the measurements.
+//! * [`check_ndf`] runs the laws of a microfacet distribution: [`d_normalization`],
+//!   [`projected_area`], [`visible_normalization`] and its sampler ([`chi2_normals`]).
+//! * One [`Config`] sets every check's budget, seed, significance, viewer directions and
+//!   tolerances; each returns a [`LawReport`] (a [`Report`] for a whole model) that says
+//!   which [`Law`] held, the measured figure with its uncertainty, and where the worst case
+//!   was.
+//!
+//! **The statistics** they measure with, public because a check built outside the crate
+//! needs them too:
 //!
 //! * [`Estimate`] / [`Accumulator`]: a Monte Carlo mean with its standard error, accumulated
 //!   in `f64`. Assert with [`Estimate::within`]`(target, k)` — "within `k` standard
 //!   errors" — or read [`Estimate::z_score`].
 //! * [`chi2_sphere`]: Pearson's chi-square goodness-of-fit test of a direction sampler
-//!   against its solid-angle density, with low-count bins pooled and outright failures
-//!   (samples where the density is zero, invalid samples or densities) reported.
-//! * [`d_normalization`], [`projected_area`], [`visible_normalization`], [`chi2_normals`]:
-//!   the laws of a microfacet distribution ([`NdfCheck`] sets their budget).
-//! * [`albedo_sampled`], [`albedo_cosine`], [`chi2_bxdf`], [`sample_consistency`],
-//!   [`reciprocity`]: the laws of a BSDF ([`BxdfCheck`] sets their budget).
+//!   against its solid-angle density ([`Chi2Config`] sets its bins and budget), with
+//!   low-count bins pooled and outright failures (samples where the density is zero,
+//!   invalid samples or densities) reported.
+//! * [`integrate_hemisphere`]: a Monte Carlo integral over the hemisphere whose proposal
+//!   follows a lobe of a given width.
 //! * [`sidak`]: the per-test significance for a family of tests, so that a file of `n`
-//!   chi-square tests keeps its overall false-rejection rate.
+//!   tests keeps its overall false-rejection rate; [`two_sided_quantile`]: the `k` of
+//!   "within `k` standard errors" at a significance.
 //! * [`Pcg32`], [`gamma_p`], [`gamma_q`], [`ln_gamma`], [`chi2_survival`]: the generator
-//!   and special functions underneath, public because checks built on this module need
-//!   them too.
+//!   and the special functions underneath.
 //!
 //! **Every test is seeded and reproducible.** Random numbers come from [`Pcg32`], whose
 //! sequence for a given seed is pinned by a test, so a check that passes once passes on
@@ -33,23 +52,25 @@
 //!
 //! ## Verifying your own BRDF
 //!
-//! A renderer's own model implements [`Bxdf`](crate::bxdf::Bxdf); then three lines in its tests
-//! run every law that applies and say, on failure, which law failed and where:
+//! A renderer's own model implements [`Bxdf`](crate::bxdf::Bxdf), in whatever spectrum it
+//! shades with (here RGB); then three lines in its tests run every law that applies, on
+//! every channel, and say, on failure, which law failed, in which channel and where:
 //!
 //! ```
 //! use lobe::bxdf::{Bxdf, BxdfSample, Lobes};
 //! use lobe::sampling::{cosine_hemisphere, cosine_hemisphere_pdf};
 //! use lobe::{Vec2, Vec3};
 //!
-//! /// A renderer's own diffuse BRDF, 90% reflectance.
+//! /// A renderer's own diffuse BRDF, an orange of reflectance (0.9, 0.6, 0.3).
 //! struct MyDiffuse;
 //!
 //! impl Bxdf for MyDiffuse {
-//!     type Spectrum = f32;
-//!     fn eval(&self, wo: Vec3, wi: Vec3) -> f32 {
-//!         if wo.z > 0.0 && wi.z > 0.0 { 0.9 / std::f32::consts::PI } else { 0.0 }
+//!     type Spectrum = Vec3;
+//!     fn eval(&self, wo: Vec3, wi: Vec3) -> Vec3 {
+//!         let rho = Vec3::new(0.9, 0.6, 0.3);
+//!         if wo.z > 0.0 && wi.z > 0.0 { rho / std::f32::consts::PI } else { Vec3::ZERO }
 //!     }
-//!     fn sample(&self, wo: Vec3, u: Vec2, _uc: f32) -> Option<BxdfSample<f32>> {
+//!     fn sample(&self, wo: Vec3, u: Vec2, _uc: f32) -> Option<BxdfSample<Vec3>> {
 //!         let wi = cosine_hemisphere(u);
 //!         let pdf = self.pdf(wo, wi);
 //!         (pdf > 0.0).then(|| BxdfSample { wi, f: self.eval(wo, wi), pdf, lobe: Lobes::DIFFUSE_REFLECTION, eta: 1.0 })
@@ -96,33 +117,19 @@
 //! assert!(estimate.within(2.0 / 3.0, 4.0), "{estimate}");
 //! ```
 
-mod bxdf;
-mod check;
-mod chi2;
-mod estimate;
-mod gamma;
-mod ndf;
-mod report;
-mod rng;
-mod significance;
+mod laws;
+mod stats;
 #[cfg(feature = "proptest")]
 pub mod strategies;
 
-pub use bxdf::{
-    BxdfCheck, ReciprocityPair, SUBNORMAL_FLOOR, albedo_cosine, albedo_sampled, chi2_bxdf,
-    reciprocity_pair, sample_consistency,
+pub use laws::{
+    Albedo, BxdfCheck, Channel, Config, Law, LawReport, ReciprocityPair, Report, SUBNORMAL_FLOOR,
+    albedo, albedo_cosine, albedo_sampled, check_bxdf, check_ndf, chi2_bxdf, chi2_normals,
+    consistency, d_normalization, energy_bound, positivity, projected_area, projected_area_masked,
+    reciprocity, reciprocity_pair, sample_consistency, sampling_chi2, visible_normalization,
 };
-pub use check::{
-    Albedo, Config, albedo, check_bxdf, consistency, energy_bound, positivity, reciprocity,
-    sampling_chi2, two_sided_quantile,
+pub use stats::{
+    Accumulator, Chi2Bin, Chi2Config, Chi2Report, Chi2Residual, Estimate, Pcg32, chi2_sphere,
+    chi2_sphere_rng, chi2_survival, gamma_p, gamma_q, integrate_hemisphere, ln_gamma, sidak,
+    two_sided_quantile,
 };
-pub use chi2::{Chi2Bin, Chi2Config, Chi2Report, Chi2Residual, chi2_sphere, chi2_sphere_rng};
-pub use estimate::{Accumulator, Estimate};
-pub use gamma::{chi2_survival, gamma_p, gamma_q, ln_gamma};
-pub use ndf::{
-    NdfCheck, NdfConfig, check_ndf, chi2_normals, d_normalization, projected_area,
-    projected_area_masked, visible_normalization,
-};
-pub use report::{Law, LawReport, Report};
-pub use rng::Pcg32;
-pub use significance::sidak;

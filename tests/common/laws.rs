@@ -7,8 +7,8 @@
 use lobe::Vec3;
 use lobe::bxdf::Bxdf;
 use lobe::verify::{
-    BxdfCheck, Config, LawReport, check_bxdf, consistency, energy_bound, positivity, reciprocity,
-    sampling_chi2, sidak,
+    BxdfCheck, Config, Estimate, LawReport, check_bxdf, consistency, energy_bound, positivity,
+    reciprocity, sampling_chi2, sidak,
 };
 
 /// A model under test.
@@ -117,4 +117,30 @@ pub fn assert_all_laws(model: &Model, n_tests: usize) {
     let report = check_bxdf(&model.name, model.bxdf.as_ref(), &model.config(n_tests));
     eprint!("{report}");
     assert!(report.passed(), "{report}");
+}
+
+/// The albedo `a` the model's sampler measured against a closed form `exact`: equal to it
+/// where the closed form is the albedo (`at_closed_form`, e.g. normal incidence), at most it
+/// elsewhere; within `k` standard errors plus the `1e-6` relative rounding of the `f32`
+/// weights the estimate averages (what the law suite allows for too).
+pub fn assert_albedo_against(name: &str, a: &Estimate, exact: f64, k: f64, at_closed_form: bool) {
+    let allowance = k * a.std_err + 1e-6 * exact;
+    if at_closed_form {
+        assert!(
+            (a.mean - exact).abs() <= allowance,
+            "{name}: albedo {a} vs {exact}"
+        );
+    } else {
+        assert!(
+            a.mean <= exact + allowance,
+            "{name}: albedo {a} above {exact}"
+        );
+    }
+}
+
+/// Every law of every model in `models`, the family's 1% shared among them.
+pub fn assert_every_model_obeys_every_law(models: &[Model]) {
+    for m in models {
+        assert_all_laws(m, models.len());
+    }
 }

@@ -2,6 +2,7 @@
 #![allow(dead_code)]
 
 pub mod buggy_ggx;
+pub mod exact;
 pub mod laws;
 pub mod quadrature;
 pub mod reference;
@@ -20,15 +21,37 @@ pub fn proptest_config(cases: u32) -> Config {
 }
 
 /// The two-sided normal quantile `k` such that each of `n_tests` estimates falls outside
-/// `±k σ` with probability `sidak(family_alpha, n_tests)`: the Šidák-corrected "k sigma".
+/// `±k σ` with probability `sidak(family_alpha, n_tests)`: the Šidák-corrected "k sigma",
+/// by the harness's own [`two_sided_quantile`](lobe::verify::two_sided_quantile).
 pub fn k_sigma(family_alpha: f64, n_tests: usize) -> f64 {
-    let per_test = lobe::verify::sidak(family_alpha, n_tests);
-    // P(|Z| > k) = per_test  ⇔  k = √2 erf⁻¹(1 − per_test).
-    std::f64::consts::SQRT_2 * f64::from(lobe::math::erf_inv((1.0 - per_test) as f32))
+    use lobe::verify::{sidak, two_sided_quantile};
+    two_sided_quantile(sidak(family_alpha, n_tests))
 }
 
 /// The unit direction at polar angle `theta_deg` and azimuth `phi` (radians).
 pub fn dir(theta_deg: f32, phi: f32) -> Vec3 {
     let t = theta_deg.to_radians();
     Vec3::new(t.sin() * phi.cos(), t.sin() * phi.sin(), t.cos())
+}
+
+/// The angle between two directions given in `f64`, as the `atan2` of the cross and dot
+/// products of the normalised vectors (accurate at small angles, where `acos` is not).
+pub fn angle_f64(a: [f64; 3], b: [f64; 3]) -> f64 {
+    let n = |v: [f64; 3]| {
+        let l = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+        [v[0] / l, v[1] / l, v[2] / l]
+    };
+    let (a, b) = (n(a), n(b));
+    let cross = [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ];
+    let sin = (cross[0] * cross[0] + cross[1] * cross[1] + cross[2] * cross[2]).sqrt();
+    sin.atan2(a[0] * b[0] + a[1] * b[1] + a[2] * b[2])
+}
+
+/// `v` in `f64`.
+pub fn f64s(v: Vec3) -> [f64; 3] {
+    [f64::from(v.x), f64::from(v.y), f64::from(v.z)]
 }

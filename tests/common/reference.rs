@@ -43,6 +43,32 @@ pub fn vec_field(r: &Value, prefix: &str) -> Vec3 {
     )
 }
 
+/// The microfacet distribution a record names in its `distribution` field.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Kind {
+    Ggx,
+    Beckmann,
+}
+
+impl Kind {
+    /// The record's distribution.
+    pub fn of(r: &Value) -> Self {
+        match r["distribution"].as_str() {
+            Some("ggx") => Self::Ggx,
+            Some("beckmann") => Self::Beckmann,
+            other => panic!("unknown distribution {other:?} in {r}"),
+        }
+    }
+
+    /// Its name in the records.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Ggx => "ggx",
+            Self::Beckmann => "beckmann",
+        }
+    }
+}
+
 /// The largest deviations of one quantity.
 #[derive(Debug, Default, Clone, Copy)]
 pub struct Dev {
@@ -56,6 +82,45 @@ pub struct Dev {
     /// Oracle exactly zero, lobe non-zero but within the absolute tolerance (Mitsuba's
     /// `1e-20` cut of `D`).
     pub tiny_where_zero: usize,
+}
+
+impl Dev {
+    /// Adds one comparison of lobe's value with the oracle's, `fail`ing the tolerance or not;
+    /// returns whether lobe is non-zero (but within tolerance) where the oracle is exactly zero.
+    pub fn add(&mut self, lobe: f64, oracle: f64, fail: bool) -> bool {
+        let err = (lobe - oracle).abs();
+        let tiny = oracle == 0.0 && lobe != 0.0 && !fail;
+        self.values += 1;
+        self.max_abs = self.max_abs.max(err);
+        if oracle != 0.0 {
+            self.max_rel = self.max_rel.max(err / oracle.abs());
+        } else {
+            self.zeros += 1;
+        }
+        self.tiny_where_zero += usize::from(tiny);
+        self.failures += usize::from(fail);
+        tiny
+    }
+}
+
+/// Prints each category's deviations, indented.
+pub fn print_devs<'a, C: std::fmt::Display>(
+    indent: &str,
+    devs: impl IntoIterator<Item = (C, &'a Dev)>,
+) {
+    for (category, dev) in devs {
+        eprintln!("{indent}{category}: {dev}");
+    }
+}
+
+/// Asserts that no record failed, listing the failures otherwise.
+pub fn assert_no_failures(failures: &[String]) {
+    assert!(
+        failures.is_empty(),
+        "{} failures:\n{}",
+        failures.len(),
+        failures.join("\n")
+    );
 }
 
 impl std::fmt::Display for Dev {

@@ -1,4 +1,7 @@
-//! Significance levels for families of tests.
+//! Significance levels and their normal quantiles: [`sidak`], the per-test level of a family
+//! of tests, and [`two_sided_quantile`], the `k` of "within `k` standard errors" at a level.
+
+use super::gamma::gamma_q;
 
 /// The per-test significance that keeps the chance of *any* false rejection among
 /// `n_tests` independent tests at `alpha`: Šidák's correction `1 − (1 − α)^(1/n)`
@@ -20,6 +23,33 @@ pub fn sidak(alpha: f64, n_tests: usize) -> f64 {
         return alpha;
     }
     -((-alpha).ln_1p() / n_tests as f64).exp_m1()
+}
+
+/// The two-sided normal quantile `k` with `P(|Z| > k) = p`, by bisection on
+/// `erfc(k/√2) = Q(½, k²/2)`: the `k` of [`Estimate::within`](super::Estimate::within) for a
+/// test at significance `p`.
+///
+/// ```
+/// use lobe::verify::{sidak, two_sided_quantile};
+/// // 5 %: the familiar 1.96.
+/// assert!((two_sided_quantile(0.05) - 1.959_964).abs() < 1e-6);
+/// // One of ten estimates at a family-wise 1 %.
+/// let k = two_sided_quantile(sidak(0.01, 10));
+/// assert!((k - 3.289).abs() < 1e-3);
+/// ```
+#[must_use]
+pub fn two_sided_quantile(p: f64) -> f64 {
+    let tail = |k: f64| gamma_q(0.5, 0.5 * k * k);
+    let (mut lo, mut hi) = (0.0_f64, 40.0_f64);
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if tail(mid) > p {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    0.5 * (lo + hi)
 }
 
 #[cfg(test)]

@@ -1,6 +1,10 @@
-//! Pearson's chi-square goodness-of-fit test of a direction sampler against its density.
+//! Pearson's chi-square goodness-of-fit test of a direction sampler against its density:
+//! its settings ([`Chi2Config`]), the test ([`chi2_sphere`], [`chi2_sphere_rng`]) and its
+//! report. The expected counts come from the adaptive quadrature of
+//! `integrate`; the p-value from [`chi2_survival`].
 
 use super::gamma::chi2_survival;
+use super::integrate::Quadrature;
 use super::rng::Pcg32;
 use glam::{Vec2, Vec3};
 use std::f64::consts::TAU;
@@ -22,16 +26,6 @@ const STAT_TOL: f64 = 0.05;
 const REL_TOL_FLOOR: f64 = 1e-7;
 /// Nor at an absolute accuracy finer than this many expected samples per bin.
 const ABS_TOL_SAMPLES: f64 = 1e-3;
-/// The inner quadrature (over `φ`) aims at this fraction of the outer tolerance, so that
-/// its error does not drive the outer refinement.
-const INNER_TOL_FRACTION: f64 = 0.1;
-/// Maximum number of bisections of a base cell, on each axis: `2⁻¹²` of a base cell
-/// locates a jump in the density to far below one sample.
-const MAX_DEPTH: u32 = 12;
-/// Density evaluations allowed per bin before refinement stops (reached only by densities
-/// whose `f32` rounding noise exceeds the tolerance, where refining would not help: the
-/// noise averages out of the integral but not out of the error estimate).
-const BIN_EVAL_BUDGET: u64 = 100_000;
 /// The no-sample bin is left out when it expects fewer samples than this and gets none.
 const NO_SAMPLE_NEGLIGIBLE: f64 = 0.01;
 
@@ -349,14 +343,7 @@ pub fn chi2_sphere_rng(
     // Expected counts: a first pass on the base grid gives each bin's rough mass, which
     // sets the tolerance of the adaptive second pass.
     let n = config.samples as f64;
-    let mut quad = Quadrature {
-        pdf: &pdf,
-        res: config.integration_res,
-        invalid: 0,
-        evals: 0,
-        limit: 0,
-        error: 0.0,
-    };
+    let mut quad = Quadrature::new(&pdf, config.integration_res);
     let dc = 2.0 / nt as f64;
     let dphi = TAU / np as f64;
     let bin_bounds = |t: usize, p: usize| {
@@ -469,148 +456,6 @@ pub fn chi2_sphere_rng(
         bins: bins.len(),
         pdf_evaluations: quad.evals,
         worst,
-    }
-}
-
-/// Nested adaptive Simpson quadrature of a density over `(cos θ, φ)` rectangles.
-struct Quadrature<'p, P> {
-    /// The density.
-    pdf: &'p P,
-    /// Base cells per bin and axis.
-    res: usize,
-    /// Density values that were negative or not finite.
-    invalid: usize,
-    /// Density evaluations so far.
-    evals: u64,
-    /// Refinement stops once `evals` reaches this (the current bin's budget).
-    limit: u64,
-    /// Sum of the outer quadrature's error estimates so far.
-    error: f64,
-}
-
-/// Simpson's rule on `[a, b]` from the values at the ends and the midpoint.
-#[inline]
-fn simpson(a: f64, b: f64, fa: f64, fm: f64, fb: f64) -> f64 {
-    (b - a) / 6.0 * (fa + 4.0 * fm + fb)
-}
-
-impl<P: Fn(Vec3) -> f64> Quadrature<'_, P> {
-    /// The density at `(cos θ, φ)`; invalid values are counted and read as zero.
-    fn density(&mut self, c: f64, phi: f64) -> f64 {
-        self.evals += 1;
-        let s = (1.0 - c * c).max(0.0).sqrt();
-        let (sp, cp) = phi.sin_cos();
-        let w = Vec3::new((s * cp) as f32, (s * sp) as f32, c as f32);
-        let v = (self.pdf)(w);
-        if v.is_finite() && v >= 0.0 {
-            v
-        } else {
-            self.invalid += 1;
-            0.0
-        }
-    }
-
-    /// `∫∫ pdf d(cos θ) dφ` over one bin by the composite Simpson product rule on the base
-    /// grid (`2 res + 1` nodes per axis), without refinement.
-    fn grid(&mut self, c0: f64, c1: f64, phi0: f64, phi1: f64) -> f64 {
-        let m = 2 * self.res;
-        // Composite Simpson weights 1, 4, 2, 4, …, 4, 1 (times h / 3).
-        let weight = |i: usize| match i {
-            0 => 1.0,
-            i if i == m => 1.0,
-            i if i % 2 == 1 => 4.0,
-            _ => 2.0,
-        };
-        let (hc, hp) = ((c1 - c0) / m as f64, (phi1 - phi0) / m as f64);
-        let mut sum = 0.0;
-        for i in 0..=m {
-            let c = if i == m { c1 } else { c0 + hc * i as f64 };
-            for j in 0..=m {
-                let phi = if j == m { phi1 } else { phi0 + hp * j as f64 };
-                sum += weight(i) * weight(j) * self.density(c, phi);
-            }
-        }
-        sum * (hc / 3.0) * (hp / 3.0)
-    }
-
-    /// `∫∫ pdf d(cos θ) dφ` over one bin, aiming at an absolute error below `tol`.
-    fn bin(&mut self, c0: f64, c1: f64, phi0: f64, phi1: f64, tol: f64) -> f64 {
-        self.limit = self.evals + BIN_EVAL_BUDGET;
-        // The inner integral is multiplied by at most the bin's width in cos θ.
-        let inner_tol = INNER_TOL_FRACTION * tol / (c1 - c0);
-        let mut outer_error = 0.0;
-        let (mut inner_error, mut inner_count) = (0.0, 0_u64);
-        let mass = self.composite(c0, c1, tol, &mut outer_error, &mut |q: &mut Self, c| {
-            inner_count += 1;
-            q.composite(
-                phi0,
-                phi1,
-                inner_tol,
-                &mut inner_error,
-                &mut |q: &mut Self, phi| q.density(c, phi),
-            )
-        });
-        // The outer estimate misses a bias shared by all inner integrals; add their mean
-        // error over the bin's width.
-        self.error += outer_error + inner_error / inner_count.max(1) as f64 * (c1 - c0);
-        mass
-    }
-
-    /// `∫ f` over `[a, b]` to an absolute tolerance `tol`: `res` equal cells, each refined
-    /// adaptively with an equal share of the tolerance. Adds the error estimate to `error`.
-    fn composite<F: FnMut(&mut Self, f64) -> f64>(
-        &mut self,
-        a: f64,
-        b: f64,
-        tol: f64,
-        error: &mut f64,
-        f: &mut F,
-    ) -> f64 {
-        let h = (b - a) / self.res as f64;
-        let cell_tol = tol / self.res as f64;
-        let mut fa = f(self, a);
-        let mut sum = 0.0;
-        for k in 0..self.res {
-            let x0 = a + h * k as f64;
-            let x1 = if k + 1 == self.res { b } else { x0 + h };
-            let fm = f(self, 0.5 * (x0 + x1));
-            let fb = f(self, x1);
-            let whole = simpson(x0, x1, fa, fm, fb);
-            sum += self.refine(f, (x0, x1), [fa, fm, fb], whole, cell_tol, MAX_DEPTH, error);
-            fa = fb;
-        }
-        sum
-    }
-
-    /// Adaptive Simpson (Lyness 1969): accept the two half-interval estimates when they
-    /// differ from the whole-interval estimate by at most `15 tol` (Simpson's error shrinks
-    /// sixteenfold per halving, so the difference is about 15 times the halves' error),
-    /// else recurse with `tol / 2` on each half. Returns the plain sum of the halves (no
-    /// Richardson term), so a non-negative integrand gives a non-negative result that is
-    /// zero only when every node is.
-    #[allow(clippy::too_many_arguments)]
-    fn refine<F: FnMut(&mut Self, f64) -> f64>(
-        &mut self,
-        f: &mut F,
-        (a, b): (f64, f64),
-        [fa, fm, fb]: [f64; 3],
-        whole: f64,
-        tol: f64,
-        depth: u32,
-        error: &mut f64,
-    ) -> f64 {
-        let m = 0.5 * (a + b);
-        let flm = f(self, 0.5 * (a + m));
-        let frm = f(self, 0.5 * (m + b));
-        let left = simpson(a, m, fa, flm, fm);
-        let right = simpson(m, b, fm, frm, fb);
-        let diff = (left + right - whole).abs();
-        if diff <= 15.0 * tol || depth == 0 || self.evals >= self.limit {
-            *error += diff / 15.0;
-            return left + right;
-        }
-        self.refine(f, (a, m), [fa, flm, fm], left, 0.5 * tol, depth - 1, error)
-            + self.refine(f, (m, b), [fm, frm, fb], right, 0.5 * tol, depth - 1, error)
     }
 }
 

@@ -126,20 +126,7 @@ fn q_continued_fraction(a: f64, x: f64) -> f64 {
 /// where it converges slowly. Accurate to about `1e-14` absolute.
 #[must_use]
 pub fn gamma_p(a: f64, x: f64) -> f64 {
-    if !in_domain(a, x) {
-        return f64::NAN;
-    }
-    if x == 0.0 {
-        return 0.0;
-    }
-    if x == f64::INFINITY {
-        return 1.0;
-    }
-    if x < a + 1.0 {
-        p_series(a, x)
-    } else {
-        1.0 - q_continued_fraction(a, x)
-    }
+    incomplete_gamma(a, x).0
 }
 
 /// The regularised upper incomplete gamma function `Q(a, x) = Γ(a, x) / Γ(a) = 1 − P(a, x)`.
@@ -149,19 +136,27 @@ pub fn gamma_p(a: f64, x: f64) -> f64 {
 /// `x < a + 1` it is `1 − P` from the series. Accurate to about `1e-14` absolute.
 #[must_use]
 pub fn gamma_q(a: f64, x: f64) -> f64 {
+    incomplete_gamma(a, x).1
+}
+
+/// `(P(a, x), Q(a, x))`: the series for `x < a + 1` gives `P` and `Q = 1 − P`, the continued
+/// fraction beyond gives `Q` and `P = 1 − Q`; NaN outside the domain.
+fn incomplete_gamma(a: f64, x: f64) -> (f64, f64) {
     if !in_domain(a, x) {
-        return f64::NAN;
+        return (f64::NAN, f64::NAN);
     }
     if x == 0.0 {
-        return 1.0;
+        return (0.0, 1.0);
     }
     if x == f64::INFINITY {
-        return 0.0;
+        return (1.0, 0.0);
     }
     if x < a + 1.0 {
-        1.0 - p_series(a, x)
+        let p = p_series(a, x);
+        (p, 1.0 - p)
     } else {
-        q_continued_fraction(a, x)
+        let q = q_continued_fraction(a, x);
+        (1.0 - q, q)
     }
 }
 

@@ -1,0 +1,29 @@
+//! The laws room: what a model must obey, measured, reported and checked, one file per
+//! subject.
+//!
+//! What lives here: `bxdf.rs`, the laws of a BSDF of any spectrum (positivity, reciprocity,
+//! the energy bound by two albedo estimators, sampling, consistency), [`check_bxdf`], and
+//! [`Channel`]; `distribution.rs`, the laws of a microfacet distribution (`D` normalisation,
+//! projected area, visible normals, sampling) and [`check_ndf`]; and what the two share: the
+//! one configuration ([`Config`], with the older [`BxdfCheck`] that converts into it,
+//! `config.rs`) and the reports ([`Law`], [`LawReport`], [`Report`], `report.rs`).
+//!
+//! Each file measures with the tools of the statistics room and nothing else; neither file
+//! uses the other.
+
+mod bxdf;
+mod config;
+mod distribution;
+mod report;
+
+pub use bxdf::{
+    Albedo, Channel, ReciprocityPair, SUBNORMAL_FLOOR, albedo, albedo_cosine, albedo_sampled,
+    check_bxdf, chi2_bxdf, consistency, energy_bound, positivity, reciprocity, reciprocity_pair,
+    sample_consistency, sampling_chi2,
+};
+pub use config::{BxdfCheck, Config};
+pub use distribution::{
+    check_ndf, chi2_normals, d_normalization, projected_area, projected_area_masked,
+    visible_normalization,
+};
+pub use report::{Law, LawReport, Report};
