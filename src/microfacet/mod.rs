@@ -128,10 +128,28 @@ impl View {
 /// let view = uniform.view(wo);
 /// let m = uniform.sample(&view, Vec2::new(0.3, 0.6));
 /// assert!((uniform.pdf(&view, m, uniform.d(m)) - m.z / core::f32::consts::PI).abs() < 1e-6);
-/// ```
 ///
-/// `lobe::verify::check_ndf` runs the laws of a distribution on it (normalisation, projected
-/// area, visible normals, the sampler against its density).
+/// // Its laws (normalisation, projected area, visible normals, the sampler against its
+/// // density), and the laws of the Cook-Torrance model built on it, measured like the
+/// // crate's own (a small budget, to keep the example quick):
+/// use lobe::bxdf::Microfacet;
+/// use lobe::fresnel::NoFresnel;
+/// use lobe::microfacet::Masking;
+/// use lobe::verify::{check_bxdf, check_ndf, Config};
+/// let config = Config {
+///     integral_samples: 40_000,
+///     albedo_samples: 20_000,
+///     chi2_samples: 40_000,
+///     pairs: 1_000,
+///     consistency_samples: 1_000,
+///     ..Config::default()
+/// };
+/// let report = check_ndf("uniform", &uniform, &config);
+/// assert!(report.passed(), "{report}");
+/// let brdf = Microfacet::new(Uniform, Masking::HeightCorrelated, NoFresnel::<f32>::new());
+/// let report = check_bxdf("uniform microfacets", &brdf, &config);
+/// assert!(report.passed(), "{report}");
+/// ```
 pub trait NormalDistribution {
     /// The distribution of normals `D(m)`, normalised so that `∫ D(m) cos θm dωm = 1`;
     /// zero for `m.z ≤ 0`.
