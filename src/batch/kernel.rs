@@ -70,41 +70,17 @@ impl<M: Prepare + ?Sized> LaneOp<M> for Plain {
     }
 }
 
-/// `f[k] = eval(wo[k], wi[k])`.
+/// `f[k] = eval(wo[k], wi[k])` over the first `n` lanes (every slice has at least `n`).
 pub(crate) struct EvalKernel<'a, 'f, M: Prepare + ?Sized, O>
 where
     M::Spectrum: Lanes,
 {
-    m: &'a M,
-    wo: Vec3s<'a>,
-    wi: Vec3s<'a>,
-    f: <M::Spectrum as Lanes>::Mut<'f>,
-    n: usize,
-    op: PhantomData<O>,
-}
-
-impl<'a, 'f, M: Prepare + ?Sized, O> EvalKernel<'a, 'f, M, O>
-where
-    M::Spectrum: Lanes,
-{
-    /// The loop over the first `n` lanes (every slice has at least `n`).
-    #[inline(always)]
-    pub(crate) fn new(
-        m: &'a M,
-        wo: Vec3s<'a>,
-        wi: Vec3s<'a>,
-        f: <M::Spectrum as Lanes>::Mut<'f>,
-        n: usize,
-    ) -> Self {
-        Self {
-            m,
-            wo,
-            wi,
-            f,
-            n,
-            op: PhantomData,
-        }
-    }
+    pub(super) m: &'a M,
+    pub(super) wo: Vec3s<'a>,
+    pub(super) wi: Vec3s<'a>,
+    pub(super) f: <M::Spectrum as Lanes>::Mut<'f>,
+    pub(super) n: usize,
+    pub(super) op: PhantomData<O>,
 }
 
 /// Re-slices a [`Vec3s`] to `n` lanes, in the loop's own function.
@@ -132,35 +108,14 @@ where
     }
 }
 
-/// `pdf[k] = pdf(wo[k], wi[k])`.
+/// `pdf[k] = pdf(wo[k], wi[k])` over the first `n` lanes.
 pub(crate) struct PdfKernel<'a, 'f, M: ?Sized, O> {
-    m: &'a M,
-    wo: Vec3s<'a>,
-    wi: Vec3s<'a>,
-    pdf: &'f mut [f32],
-    n: usize,
-    op: PhantomData<O>,
-}
-
-impl<'a, 'f, M: ?Sized, O> PdfKernel<'a, 'f, M, O> {
-    /// The loop over the first `n` lanes (every slice has at least `n`).
-    #[inline(always)]
-    pub(crate) fn new(
-        m: &'a M,
-        wo: Vec3s<'a>,
-        wi: Vec3s<'a>,
-        pdf: &'f mut [f32],
-        n: usize,
-    ) -> Self {
-        Self {
-            m,
-            wo,
-            wi,
-            pdf,
-            n,
-            op: PhantomData,
-        }
-    }
+    pub(super) m: &'a M,
+    pub(super) wo: Vec3s<'a>,
+    pub(super) wi: Vec3s<'a>,
+    pub(super) pdf: &'f mut [f32],
+    pub(super) n: usize,
+    pub(super) op: PhantomData<O>,
 }
 
 impl<M: Prepare + ?Sized, O: LaneOp<M>> Kernel for PdfKernel<'_, '_, M, O> {
@@ -174,44 +129,19 @@ impl<M: Prepare + ?Sized, O: LaneOp<M>> Kernel for PdfKernel<'_, '_, M, O> {
     }
 }
 
-/// `(wi, f, pdf)[k] = sample(wo[k], u[k], uc[k])`, zeros for no sample.
+/// `(wi, f, pdf)[k] = sample(wo[k], u[k], uc[k])` over the first `n` lanes, zeros for no
+/// sample.
 pub(crate) struct SampleKernel<'a, 'f, M: Prepare + ?Sized, O>
 where
     M::Spectrum: Lanes,
 {
-    m: &'a M,
-    wo: Vec3s<'a>,
-    u: Vec2s<'a>,
-    uc: &'a [f32],
-    out: SampleOut<'f, M::Spectrum>,
-    n: usize,
-    op: PhantomData<O>,
-}
-
-impl<'a, 'f, M: Prepare + ?Sized, O> SampleKernel<'a, 'f, M, O>
-where
-    M::Spectrum: Lanes,
-{
-    /// The loop over the first `n` lanes (every slice has at least `n`).
-    #[inline(always)]
-    pub(crate) fn new(
-        m: &'a M,
-        wo: Vec3s<'a>,
-        u: Vec2s<'a>,
-        uc: &'a [f32],
-        out: SampleOut<'f, M::Spectrum>,
-        n: usize,
-    ) -> Self {
-        Self {
-            m,
-            wo,
-            u,
-            uc,
-            out,
-            n,
-            op: PhantomData,
-        }
-    }
+    pub(super) m: &'a M,
+    pub(super) wo: Vec3s<'a>,
+    pub(super) u: Vec2s<'a>,
+    pub(super) uc: &'a [f32],
+    pub(super) out: SampleOut<'f, M::Spectrum>,
+    pub(super) n: usize,
+    pub(super) op: PhantomData<O>,
 }
 
 impl<M: Prepare + ?Sized, O: LaneOp<M>> Kernel for SampleKernel<'_, '_, M, O>

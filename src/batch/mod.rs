@@ -164,7 +164,15 @@ where
     M::Spectrum: Lanes,
 {
     let n = same_length(&[wo.lanes()?, wi.lanes()?, M::Spectrum::lanes(&f)?])?;
-    dispatch(EvalKernel::<M, O>::new(m, wo, wi, f, n));
+    let op = core::marker::PhantomData::<O>;
+    dispatch(EvalKernel {
+        m,
+        wo,
+        wi,
+        f,
+        n,
+        op,
+    });
     Ok(())
 }
 
@@ -180,7 +188,15 @@ where
     M::Spectrum: Lanes,
 {
     let n = same_length(&[wo.lanes()?, wi.lanes()?, pdf.len()])?;
-    dispatch(PdfKernel::<M, O>::new(m, wo, wi, pdf, n));
+    let op = core::marker::PhantomData::<O>;
+    dispatch(PdfKernel {
+        m,
+        wo,
+        wi,
+        pdf,
+        n,
+        op,
+    });
     Ok(())
 }
 
@@ -204,6 +220,15 @@ where
         M::Spectrum::lanes(&out.f)?,
         out.pdf.len(),
     ])?;
-    dispatch(SampleKernel::<M, O>::new(m, wo, u, uc, out, n));
+    let op = core::marker::PhantomData::<O>;
+    dispatch(SampleKernel {
+        m,
+        wo,
+        u,
+        uc,
+        out,
+        n,
+        op,
+    });
     Ok(())
 }

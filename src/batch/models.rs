@@ -44,51 +44,37 @@ trait Masked: Prepare {
     ) -> Option<BxdfSample<Self::Spectrum>>;
 }
 
-impl<D: NormalDistribution, F: Fresnel> Masked for Microfacet<D, F> {
-    #[inline(always)]
-    fn masking_term(&self) -> Masking {
-        self.masking()
-    }
+/// `Masked` for a model with `masking()`, `eval_with(&at, wi, masking)` and
+/// `sample_with(&at, u, uc, masking)`.
+macro_rules! masked {
+    (impl<$($g:ident: $b:path),*> for $t:ty) => {
+        impl<$($g: $b),*> Masked for $t {
+            #[inline(always)]
+            fn masking_term(&self) -> Masking {
+                self.masking()
+            }
 
-    #[inline(always)]
-    fn eval_masked(&self, wo: Vec3, wi: Vec3, masking: Masking) -> F::Spectrum {
-        self.eval_with(&self.prepare(wo), wi, masking)
-    }
+            #[inline(always)]
+            fn eval_masked(&self, wo: Vec3, wi: Vec3, masking: Masking) -> Self::Spectrum {
+                self.eval_with(&self.prepare(wo), wi, masking)
+            }
 
-    #[inline(always)]
-    fn sample_masked(
-        &self,
-        wo: Vec3,
-        u: Vec2,
-        _uc: f32,
-        masking: Masking,
-    ) -> Option<BxdfSample<F::Spectrum>> {
-        self.sample_with(&self.prepare(wo), u, masking)
-    }
+            #[inline(always)]
+            fn sample_masked(
+                &self,
+                wo: Vec3,
+                u: Vec2,
+                uc: f32,
+                masking: Masking,
+            ) -> Option<BxdfSample<Self::Spectrum>> {
+                self.sample_with(&self.prepare(wo), u, uc, masking)
+            }
+        }
+    };
 }
 
-impl<D: NormalDistribution> Masked for RoughDielectric<D> {
-    #[inline(always)]
-    fn masking_term(&self) -> Masking {
-        self.masking()
-    }
-
-    #[inline(always)]
-    fn eval_masked(&self, wo: Vec3, wi: Vec3, masking: Masking) -> f32 {
-        self.eval_with(&self.prepare(wo), wi, masking)
-    }
-
-    #[inline(always)]
-    fn sample_masked(
-        &self,
-        wo: Vec3,
-        u: Vec2,
-        uc: f32,
-        masking: Masking,
-    ) -> Option<BxdfSample<f32>> {
-        self.sample_with(&self.prepare(wo), u, uc, masking)
-    }
-}
+masked!(impl<D: NormalDistribution, F: Fresnel> for Microfacet<D, F>);
+masked!(impl<D: NormalDistribution> for RoughDielectric<D>);
 
 /// A [`Masked`] model's lanes with the masking term `MASKINGS[K]`.
 struct FixedMasking<const K: usize>;

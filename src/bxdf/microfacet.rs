@@ -163,6 +163,7 @@ impl<D: NormalDistribution, F: Fresnel> Microfacet<D, F> {
         &self,
         at: &At<View>,
         u: Vec2,
+        _uc: f32,
         masking: Masking,
     ) -> Option<BxdfSample<F::Spectrum>> {
         if !(at.wo.z > 0.0) {
@@ -202,10 +203,7 @@ impl<D: NormalDistribution, F: Fresnel> Prepare for Microfacet<D, F> {
 
     #[inline(always)]
     fn prepare(&self, wo: Vec3) -> Self::Prepared {
-        At {
-            wo,
-            state: self.distribution.view(wo),
-        }
+        At::view(&self.distribution, wo)
     }
 
     #[inline(always)]
@@ -233,7 +231,7 @@ impl<D: NormalDistribution, F: Fresnel> Prepare for Microfacet<D, F> {
         u: Vec2,
         _uc: f32,
     ) -> Option<BxdfSample<F::Spectrum>> {
-        self.sample_with(at, u, self.masking)
+        self.sample_with(at, u, _uc, self.masking)
     }
 
     #[inline(always)]

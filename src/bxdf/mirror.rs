@@ -1,9 +1,8 @@
 //! A perfect mirror: delta reflection, weighted by a Fresnel term.
 
-use super::{BxdfSample, Lobes, Prepare, delta_scale};
+use super::{BxdfSample, Lobes, delta_scale};
 use crate::fresnel::Fresnel;
-use crate::spectrum::Spectrum;
-use glam::{Vec2, Vec3};
+use glam::Vec3;
 
 /// Perfect specular reflection, `wi = 2 (wo·n) n − wo`, with reflectance `F(cos θo)`:
 ///
@@ -32,24 +31,10 @@ impl<F: Fresnel> Mirror<F> {
     pub fn new(fresnel: F) -> Self {
         Self { fresnel }
     }
-}
 
-impl<F: Fresnel> Prepare for Mirror<F> {
-    type Spectrum = F::Spectrum;
-    type Prepared = Vec3;
-
+    /// `sample` (its lobes are delta lobes: `eval` and `pdf` are zero).
     #[inline]
-    fn prepare(&self, wo: Vec3) -> Vec3 {
-        wo
-    }
-
-    #[inline]
-    fn eval_prepared(&self, _wo: &Vec3, _wi: Vec3) -> F::Spectrum {
-        F::Spectrum::zero()
-    }
-
-    #[inline]
-    fn sample_prepared(&self, &wo: &Vec3, _u: Vec2, _uc: f32) -> Option<BxdfSample<F::Spectrum>> {
+    fn sample_delta(&self, wo: Vec3, _uc: f32) -> Option<BxdfSample<F::Spectrum>> {
         if !(wo.z > 0.0) {
             return None;
         }
@@ -62,14 +47,6 @@ impl<F: Fresnel> Prepare for Mirror<F> {
             eta: 1.0,
         })
     }
-
-    #[inline]
-    fn pdf_prepared(&self, _wo: &Vec3, _wi: Vec3) -> f32 {
-        0.0
-    }
-
-    #[inline]
-    fn lobes(&self) -> Lobes {
-        Lobes::SPECULAR_REFLECTION
-    }
 }
+
+delta_model!(impl<F: Fresnel> for Mirror<F>, spectrum F::Spectrum, lobes Lobes::SPECULAR_REFLECTION);

@@ -68,6 +68,48 @@
 //! # Ok::<(), lobe::ParamError>(())
 //! ```
 
+/// The [`Prepare`] impl of a model with delta lobes only (a mirror, smooth glass, a thin
+/// sheet): it prepares `wo` alone, `eval` and `pdf` are zero, and `sample` is the model's own
+/// `fn sample_delta(&self, wo: Vec3, uc: f32) -> Option<BxdfSample<S>>`.
+macro_rules! delta_model {
+    (impl$(<$g:ident: $b:path>)? for $t:ty, spectrum $s:ty, lobes $lobes:expr) => {
+        impl$(<$g: $b>)? $crate::bxdf::Prepare for $t {
+            type Spectrum = $s;
+            type Prepared = glam::Vec3;
+
+            #[inline(always)]
+            fn prepare(&self, wo: glam::Vec3) -> glam::Vec3 {
+                wo
+            }
+
+            #[inline(always)]
+            fn eval_prepared(&self, _wo: &glam::Vec3, _wi: glam::Vec3) -> $s {
+                <$s as $crate::spectrum::Spectrum>::zero()
+            }
+
+            #[inline(always)]
+            fn pdf_prepared(&self, _wo: &glam::Vec3, _wi: glam::Vec3) -> f32 {
+                0.0
+            }
+
+            #[inline(always)]
+            fn sample_prepared(
+                &self,
+                &wo: &glam::Vec3,
+                _u: glam::Vec2,
+                uc: f32,
+            ) -> Option<$crate::bxdf::BxdfSample<$s>> {
+                self.sample_delta(wo, uc)
+            }
+
+            #[inline]
+            fn lobes(&self) -> $crate::bxdf::Lobes {
+                $lobes
+            }
+        }
+    };
+}
+
 mod blinn_phong;
 mod diffuse_glossy;
 mod disney_diffuse;
@@ -268,6 +310,20 @@ impl<S: Spectrum> BxdfSample<S> {
 pub struct At<V> {
     pub(crate) wo: Vec3,
     pub(crate) state: V,
+}
+
+impl At<crate::microfacet::View> {
+    /// `wo` and the distribution's view of it: what a microfacet model prepares.
+    #[inline(always)]
+    pub(crate) fn view<D: crate::microfacet::NormalDistribution + ?Sized>(
+        dist: &D,
+        wo: Vec3,
+    ) -> Self {
+        Self {
+            wo,
+            state: dist.view(wo),
+        }
+    }
 }
 
 impl<V> At<V> {

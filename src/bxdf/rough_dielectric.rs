@@ -285,10 +285,7 @@ impl<D: NormalDistribution> Prepare for RoughDielectric<D> {
     /// `wo` and the distribution's view of it (of `−wo` from the inside).
     #[inline(always)]
     fn prepare(&self, wo: Vec3) -> Self::Prepared {
-        At {
-            wo,
-            state: self.distribution.view(wo),
-        }
+        At::view(&self.distribution, wo)
     }
 
     #[inline(always)]

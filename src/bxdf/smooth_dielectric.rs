@@ -1,10 +1,10 @@
 //! A smooth dielectric interface: delta reflection and refraction with the exact Fresnel term.
 
-use super::{BxdfSample, Lobes, Prepare, TransportMode, delta_scale};
+use super::{BxdfSample, Lobes, TransportMode, delta_scale};
 use crate::frame::refract;
 use crate::fresnel::dielectric;
 use crate::param::Eta;
-use glam::{Vec2, Vec3};
+use glam::Vec3;
 
 /// A smooth interface between two dielectrics: specular reflection with probability `F` and
 /// refraction (Snell's law) with probability `1 − F`, `F` the exact unpolarised Fresnel
@@ -44,24 +44,10 @@ impl SmoothDielectric {
     pub fn with_mode(self, mode: TransportMode) -> Self {
         Self { mode, ..self }
     }
-}
 
-impl Prepare for SmoothDielectric {
-    type Spectrum = f32;
-    type Prepared = Vec3;
-
+    /// `sample` (its lobes are delta lobes: `eval` and `pdf` are zero).
     #[inline]
-    fn prepare(&self, wo: Vec3) -> Vec3 {
-        wo
-    }
-
-    #[inline]
-    fn eval_prepared(&self, _wo: &Vec3, _wi: Vec3) -> f32 {
-        0.0
-    }
-
-    #[inline]
-    fn sample_prepared(&self, &wo: &Vec3, _u: Vec2, uc: f32) -> Option<BxdfSample<f32>> {
+    fn sample_delta(&self, wo: Vec3, uc: f32) -> Option<BxdfSample<f32>> {
         if wo.z == 0.0 {
             return None;
         }
@@ -98,14 +84,6 @@ impl Prepare for SmoothDielectric {
             eta: etap,
         })
     }
-
-    #[inline]
-    fn pdf_prepared(&self, _wo: &Vec3, _wi: Vec3) -> f32 {
-        0.0
-    }
-
-    #[inline]
-    fn lobes(&self) -> Lobes {
-        Lobes::SPECULAR_REFLECTION | Lobes::SPECULAR_TRANSMISSION
-    }
 }
+
+delta_model!(impl for SmoothDielectric, spectrum f32, lobes Lobes::SPECULAR_REFLECTION | Lobes::SPECULAR_TRANSMISSION);

@@ -1,9 +1,9 @@
 //! A thin dielectric sheet (a window pane): delta reflection and straight-through transmission.
 
-use super::{BxdfSample, Lobes, Prepare, delta_scale};
+use super::{BxdfSample, Lobes, delta_scale};
 use crate::fresnel::dielectric;
 use crate::param::Eta;
-use glam::{Vec2, Vec3};
+use glam::Vec3;
 
 /// A thin slab of dielectric with parallel faces, such as a window pane, with the light's
 /// inter-reflections between its two faces summed in closed form:
@@ -41,24 +41,10 @@ impl ThinDielectric {
             1.0
         }
     }
-}
 
-impl Prepare for ThinDielectric {
-    type Spectrum = f32;
-    type Prepared = Vec3;
-
+    /// `sample` (its lobes are delta lobes: `eval` and `pdf` are zero).
     #[inline]
-    fn prepare(&self, wo: Vec3) -> Vec3 {
-        wo
-    }
-
-    #[inline]
-    fn eval_prepared(&self, _wo: &Vec3, _wi: Vec3) -> f32 {
-        0.0
-    }
-
-    #[inline]
-    fn sample_prepared(&self, &wo: &Vec3, _u: Vec2, uc: f32) -> Option<BxdfSample<f32>> {
+    fn sample_delta(&self, wo: Vec3, uc: f32) -> Option<BxdfSample<f32>> {
         if wo.z == 0.0 {
             return None;
         }
@@ -79,14 +65,6 @@ impl Prepare for ThinDielectric {
             eta: 1.0,
         })
     }
-
-    #[inline]
-    fn pdf_prepared(&self, _wo: &Vec3, _wi: Vec3) -> f32 {
-        0.0
-    }
-
-    #[inline]
-    fn lobes(&self) -> Lobes {
-        Lobes::SPECULAR_REFLECTION | Lobes::SPECULAR_TRANSMISSION
-    }
 }
+
+delta_model!(impl for ThinDielectric, spectrum f32, lobes Lobes::SPECULAR_REFLECTION | Lobes::SPECULAR_TRANSMISSION);

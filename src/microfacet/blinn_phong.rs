@@ -1,6 +1,6 @@
 //! The normalised Blinn-Phong distribution.
 
-use super::smith_table::SmithTable;
+use super::smith_table::{SmithTable, lambda_from_g1};
 use super::{Beckmann, NormalDistribution, SampleDCos, Sampling, View};
 use crate::math::{cos_pow, exp, exp_m1, ln, sqrt};
 use crate::param::{Alpha, ParamError};
@@ -133,14 +133,7 @@ impl NormalDistribution for BlinnPhongNdf {
     fn lambda(&self, w: Vec3) -> f32 {
         match &self.smith {
             None => self.beckmann.lambda(w),
-            Some(_) => {
-                let g1 = self.g1(w);
-                if g1 == 0.0 {
-                    f32::INFINITY
-                } else {
-                    1.0 / g1 - 1.0
-                }
-            }
+            Some(_) => lambda_from_g1(self.g1(w)),
         }
     }
 

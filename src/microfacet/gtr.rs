@@ -1,6 +1,6 @@
 //! Burley's generalised Trowbridge-Reitz (GTR) distribution, isotropic, any `γ > 0`.
 
-use super::smith_table::SmithTable;
+use super::smith_table::{SmithTable, lambda_from_g1};
 use super::{NormalDistribution, SampleDCos, Sampling, View};
 use crate::math::{exp, exp_m1, ln, ln_1p, safe_sqrt, sin_cos_turns, sqrt};
 use crate::param::{Alpha, ParamError};
@@ -181,12 +181,7 @@ impl NormalDistribution for Gtr {
 
     #[inline]
     fn lambda(&self, w: Vec3) -> f32 {
-        let g1 = self.g1(w);
-        if g1 == 0.0 {
-            f32::INFINITY
-        } else {
-            1.0 / g1 - 1.0
-        }
+        lambda_from_g1(self.g1(w))
     }
 
     #[inline]

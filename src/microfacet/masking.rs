@@ -37,26 +37,6 @@ impl Masking {
         }
     }
 
-    /// [`g2`](Self::g2) with `wo` prepared as `view` ([`NormalDistribution::view`]), whose
-    /// `Λ(wo)` is reused rather than evaluated again. The value is the same:
-    /// every term depends on `wo` only through `|wo.z|`, `|wo·m|` and `Λ`, which are even.
-    #[inline(always)]
-    #[must_use]
-    pub fn g2_view<D: NormalDistribution + ?Sized>(
-        self,
-        dist: &D,
-        view: &View,
-        wi: Vec3,
-        m: Vec3,
-    ) -> f32 {
-        match self {
-            Self::HeightCorrelated => 1.0 / (1.0 + view.lambda + dist.lambda(wi)),
-            // G1(wo) = (G1/cos θ) cos θ, the view's visible-normal factor.
-            Self::Separable => view.visible * view.w.z * dist.g1(wi),
-            Self::VCavity => v_cavity(view.w, wi, m),
-        }
-    }
-
     /// `G2 / (4 |cos θo| |cos θi|)` with `wo` prepared as `view`: the masking-shadowing factor
     /// of a microfacet model's value, the height-correlated one through
     /// [`NormalDistribution::visibility`]. For `|cos θo cos θi|` above `f32::MIN_POSITIVE`.
@@ -69,10 +49,15 @@ impl Masking {
         wi: Vec3,
         m: Vec3,
     ) -> f32 {
-        match self {
-            Self::HeightCorrelated => dist.visibility(view, wi),
-            _ => self.g2_view(dist, view, wi, m) / (4.0 * view.w.z * wi.z.abs()),
-        }
+        // Λ(wo), G1(wo) and |wo.z| come from the view: every term depends on wo only
+        // through |wo.z|, |wo·m| and Λ, which are even, so view.w = ±wo gives the same value.
+        let g2 = match self {
+            Self::HeightCorrelated => return dist.visibility(view, wi),
+            // G1(wo) = (G1/cos θ) cos θ, the view's visible-normal factor.
+            Self::Separable => view.visible * view.w.z * dist.g1(wi),
+            Self::VCavity => v_cavity(view.w, wi, m),
+        };
+        g2 / (4.0 * view.w.z * wi.z.abs())
     }
 }
 

@@ -57,6 +57,16 @@ impl SmithTable {
     }
 }
 
+/// `Λ = 1/G1 − 1` from a tabulated `G1`, `+∞` where `G1` is 0 (a tangent direction).
+#[inline]
+pub(crate) fn lambda_from_g1(g1: f32) -> f32 {
+    if g1 == 0.0 {
+        f32::INFINITY
+    } else {
+        1.0 / g1 - 1.0
+    }
+}
+
 /// `∫ max(0, w·m) D(m) dωm` for `w` at `(cos_w, sin_w)`: `∫ D(θ) sin θ Φ(θ) dθ` with `Φ` the
 /// closed-form `φ` integral, by Gauss-Legendre on geometrically growing intervals.
 pub(crate) fn projected_area(
