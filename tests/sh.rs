@@ -567,7 +567,11 @@ fn reflections_commute_with_evaluation() {
     let f = random_sh::<81>(&mut rng);
     let g = f.rotated(-Mat3::IDENTITY); // the antipodal map: f_lm (−1)^l
     for (i, (a, b)) in f.coeffs.iter().zip(&g.coeffs).enumerate() {
-        let sign = if band_of(i).0.is_multiple_of(2) { 1.0 } else { -1.0 };
+        let sign = if band_of(i).0.is_multiple_of(2) {
+            1.0
+        } else {
+            -1.0
+        };
         assert!((a * sign - b).abs() < 1e-5, "{i}: {a} vs {b}");
     }
 }

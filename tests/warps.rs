@@ -192,7 +192,7 @@ fn samples_where_the_pdf_is_zero_are_rejected() {
     let leaky = |u: Vec2| {
         k += 1;
         let w = cosine_hemisphere(u);
-        Some(if k % 1000 == 0 {
+        Some(if k.is_multiple_of(1000) {
             Vec3::new(w.x, w.y, -w.z)
         } else {
             w

@@ -213,14 +213,14 @@ pub fn parse<I: IntoIterator<Item = String>>(args: I) -> Result<Command, String>
 /// A message naming the missing folder.
 pub fn check_paths(o: &Options) -> Result<(), String> {
     for path in [Some(&o.output), o.layout.as_ref()].into_iter().flatten() {
-        if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
-            if !dir.is_dir() {
-                return Err(format!(
-                    "the folder {} of {} does not exist",
-                    dir.display(),
-                    path.display()
-                ));
-            }
+        if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty())
+            && !dir.is_dir()
+        {
+            return Err(format!(
+                "the folder {} of {} does not exist",
+                dir.display(),
+                path.display()
+            ));
         }
     }
     Ok(())

@@ -79,10 +79,11 @@ fn non_delta_albedo(bsdf: &impl Bxdf<Spectrum = Vec3>) -> Vec3 {
             let u = Vec2::new((i as f32 + 0.5) / N as f32, (j as f32 + 0.5) / N as f32);
             // A low-discrepancy lobe choice decorrelated from the direction.
             let uc = ((i * N + j) as f32 * 0.618_034).fract();
-            if let Some(s) = bsdf.sample(Vec3::Z, u, uc) {
-                if !s.is_specular() && s.pdf > 0.0 {
-                    sum += s.weight();
-                }
+            if let Some(s) = bsdf.sample(Vec3::Z, u, uc)
+                && !s.is_specular()
+                && s.pdf > 0.0
+            {
+                sum += s.weight();
             }
         }
     }
