@@ -140,7 +140,8 @@ impl<S: Spectrum> BlinnPhong<S> {
     /// The largest accepted exponent.
     pub const MAX_EXPONENT: f32 = 1e6;
 
-    /// A Blinn-Phong BRDF with diffuse weight `kd` (the handout's reflectance `R`), specular
+    /// A Blinn-Phong BRDF with diffuse weight `kd` ([the handout's](crate::handouts#seed-003)
+    /// reflectance `R`), specular
     /// weight `ks`, exponent
     /// `exponent` and the lobe's `form`.
     ///
@@ -166,7 +167,7 @@ impl<S: Spectrum> BlinnPhong<S> {
         })
     }
 
-    /// The diffuse weight `k_d` (the handout's `R`).
+    /// The diffuse weight `k_d` ([the handout's](crate::handouts#seed-003) `R`).
     #[inline]
     #[must_use]
     pub fn kd(&self) -> S {
