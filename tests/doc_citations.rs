@@ -14,7 +14,7 @@
 //!   the two pages and every `src/errata.md#…` or `src/handouts.md#…` link in the README
 //!   names a heading that exists (with the id rustdoc, and GitHub, derive from it);
 //! * every entry of the errata page says what pins it, and the test files and functions it
-//!   names exist.
+//!   names exist, each function in the file named before it.
 
 use std::collections::BTreeSet;
 use std::fs;
@@ -286,18 +286,14 @@ fn links_within_and_into_the_pages_name_existing_headings() {
 }
 
 /// Each entry of the errata page (a `###` heading) has a "Pinned by" part, and every file and
-/// function it names in backticks (`tests/fresnel.rs`, `slipped_schlick_is_caught…`,
-/// `tests::v_cavity_matches…`) exists, so that a renamed or moved test does not leave the
-/// page pointing at nothing.
+/// function it names in backticks exists, the function in the file named before it
+/// (`` `tests/fresnel.rs`, `slipped_schlick_is_caught…` ``, `` `src/fresnel.rs`,
+/// `tests::schlick_raises…` ``), so that a renamed or moved test does not leave the page
+/// pointing at nothing.
 #[test]
 fn errata_entries_name_tests_that_exist() {
     let pages = Pages::load();
-    let sources: Vec<String> = ["src", "tests", "examples"]
-        .iter()
-        .flat_map(|d| rust_files(&root().join(d)))
-        .map(|p| read(&p))
-        .collect();
-    let defined = |f: &str| sources.iter().any(|s| s.contains(&format!("fn {f}(")));
+    let defines = |file: &str, f: &str| read(&root().join(file)).contains(&format!("fn {f}("));
     let mut bad = Vec::new();
     let mut named = 0;
     // The page split at its `###` headings; the first piece is the introduction.
@@ -308,11 +304,15 @@ fn errata_entries_name_tests_that_exist() {
             bad.push(format!("{title}: no **Pinned by**"));
             continue;
         };
+        let mut file: Option<&str> = None;
         for token in pinned.split('`').skip(1).step_by(2) {
             if token.ends_with(".rs") {
                 named += 1;
-                if !root().join(token).is_file() {
+                if root().join(token).is_file() {
+                    file = Some(token);
+                } else {
                     bad.push(format!("{title}: no file {token}"));
+                    file = None;
                 }
             } else if token.contains('_')
                 && token
@@ -321,10 +321,12 @@ fn errata_entries_name_tests_that_exist() {
             {
                 named += 1;
                 let function = token.rsplit("::").next().unwrap();
-                if !defined(function) {
-                    bad.push(format!(
-                        "{title}: no fn {function} in src/, tests/, examples/"
-                    ));
+                match file {
+                    Some(file) if !defines(file, function) => {
+                        bad.push(format!("{title}: no fn {function} in {file}"));
+                    }
+                    None => bad.push(format!("{title}: {function} named before any file")),
+                    _ => {}
                 }
             }
         }
