@@ -152,7 +152,8 @@ pub fn same_hemisphere(a: Vec3, b: Vec3) -> bool {
 
 /// The mirror reflection of `w` about the unit normal `n`: `2 (w·n) n − w`.
 ///
-/// `w` points away from the surface, and so does the result (seed 003, "Mirror reflection").
+/// `w` points away from the surface, and so does the result ([seed 003](crate::handouts#seed-003),
+/// "Mirror reflection").
 #[inline(always)]
 #[must_use]
 pub fn reflect(w: Vec3, n: Vec3) -> Vec3 {

@@ -27,7 +27,8 @@ use crate::spectrum::Spectrum;
 ///
 /// `f0` is the reflectance at normal incidence (per channel) and `cos_d` the cosine between
 /// the incident direction and the (micro)facet normal. The fifth power applies to
-/// `(1 − cos θd)`, not to the cosine alone: the handout's `1 − cos⁵θd` is a typo (ERRATA #1).
+/// `(1 − cos θd)`, not to the cosine alone: [the handout's](crate::handouts#seed-000)
+/// `1 − cos⁵θd` is a typo ([ERRATA #1](crate::errata#erratum-1--schlick-exponent)).
 ///
 /// The cosine enters as `|cos_d|`, saturated at 1: Schlick's form has no notion of the inside
 /// of a surface, so a facet seen from behind reflects as one seen from the front, and a
@@ -313,7 +314,9 @@ pub fn conductor<S: Spectrum>(cos_i: f32, ior: &ComplexIor<S>) -> S {
 /// F   = ½(ρ∥² + ρ⊥²)
 /// ```
 ///
-/// the pair printed in the course handout (ERRATA #6) and used by *PBR* 2nd ed., §8.2.1
+/// the pair printed in [the course handout](crate::handouts#seed-000)
+/// ([ERRATA #6](crate::errata#erratum-6--conductor-fresnel-approximation)) and used by
+/// *PBR* 2nd ed., §8.2.1
 /// (`FrCond`). It drops the `sin²θ` terms of the exact result, so it is exact at normal
 /// incidence and at grazing incidence (`F = 1`) and good when `η² + κ² ≫ 1` (metals), but
 /// not in between for small `|n|`: it knows no total internal reflection and, at `κ = 0`,

@@ -40,6 +40,14 @@
 //! # Ok::<(), lobe::ParamError>(())
 //! ```
 //!
+//! ## Sources and errata
+//!
+//! The models began as the formulas of two ray-tracing lecture handouts, corrected where
+//! those slip. [`handouts`] says what the two cover and which item implements each of their
+//! formulas; [`errata`] gives every slip with its correct form, its reference and the test
+//! that pins it, and those the crate's own measurements found. Doc comments cite them as
+//! "seed 000", "seed 003", "the handout" and "ERRATA #n", linked to these pages.
+//!
 //! ## Spherical harmonics
 //!
 //! [`sh`] holds a real spherical-harmonic toolkit for lighting: the basis (closed forms for
@@ -104,6 +112,11 @@ pub mod sh;
 pub mod spectrum;
 #[cfg(feature = "verify")]
 pub mod verify;
+
+#[doc = include_str!("handouts.md")]
+pub mod handouts {}
+#[doc = include_str!("errata.md")]
+pub mod errata {}
 
 /// The README's examples, compiled and run as doctests.
 #[cfg(doctest)]

@@ -1,4 +1,5 @@
-//! The Blinn-Phong BRDF of the handouts ("modified Blinn-Phong") and its normalised form.
+//! The Blinn-Phong BRDF of [the handouts](crate::handouts#seed-003) ("modified Blinn-Phong") and its
+//! normalised form.
 
 use super::diffuse_glossy::{
     check_exponent, check_sum, cos_power_norm, diffuse_probability, weighted_lobes,
@@ -12,14 +13,16 @@ use crate::spectrum::Spectrum;
 use core::f32::consts::{FRAC_1_PI, PI};
 use glam::{Vec2, Vec3};
 
-/// Which Blinn-Phong lobe: the handout's unnormalised one or the normalised one.
+/// Which Blinn-Phong lobe: [the handout's](crate::handouts#seed-003) unnormalised one or the
+/// normalised one.
 ///
 /// Both are `k_s K(p) (n·h)^p` with `h` the half vector of `wo` and `wi`; they differ in the
 /// factor `K`.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum BlinnPhongForm {
-    /// `K = 1`: the "modified Blinn-Phong" of the handout (seed 003, with the geometry term
-    /// of ERRATA #7). **Not energy-normalised**: the lobe's albedo falls as `p` grows and
+    /// `K = 1`: the "modified Blinn-Phong" of the handout ([seed 003](crate::handouts#seed-003), with
+    /// the geometry term of [ERRATA #7](crate::errata#erratum-7--blinn-phong-geometry-factor)).
+    /// **Not energy-normalised**: the lobe's albedo falls as `p` grows and
     /// exceeds 1 for small `p` (up to `π k_s` at `p = 0`); see [`BlinnPhong`].
     Modified,
     /// `K = (p + 8)/(8π)`: Akenine-Möller, Haines & Hoffman, *Real-Time Rendering*, 3rd ed.
@@ -37,12 +40,16 @@ pub enum BlinnPhongForm {
 ///
 /// for `wo`, `wi` above the surface (zero otherwise). Blinn 1977, "Models of light
 /// reflection for computer synthesized pictures"; the handout's "modified Blinn-Phong"
-/// (seed 003, ERRATA #7: its geometry factor is `max(0, n·l)/r²`, supplied by the renderer,
+/// ([seed 003](crate::handouts#seed-003),
+/// [ERRATA #7](crate::errata#erratum-7--blinn-phong-geometry-factor): its geometry factor is
+/// `max(0, n·l)/r²`, supplied by the renderer,
 /// not part of `f`) and the normalised form of Real-Time Rendering, 3rd ed., eq. 7.49. Both
 /// are reciprocal: `h` is symmetric in `wo` and `wi`.
 ///
 /// This is the *shading-model* Blinn-Phong. The exactly normalised Blinn-Phong *distribution*
-/// `D = (p + 2)/(2π) (n·m)^p` (ERRATA #8), with masking and Fresnel, is
+/// `D = (p + 2)/(2π) (n·m)^p`
+/// ([ERRATA #8](crate::errata#erratum-8--normalised-blinn-phong-distribution)), with masking and
+/// Fresnel, is
 /// [`BlinnPhongNdf`](crate::microfacet::BlinnPhongNdf) inside a microfacet model.
 ///
 /// **Parameters.** `R, k_s ∈ [0, 1]` per channel with `R + k_s ≤ 1` in every channel, and the
@@ -69,7 +76,9 @@ pub enum BlinnPhongForm {
 /// 2^(−p/2))/((p + 2)(p + 4)) > 1`: for `k_s = 1` at every `p` below 18.7, by up to a factor
 /// π (at `p = 0`, where `f = R/π + k_s` is constant). The `Normalized` form is approximately
 /// energy-conserving: with `R + k_s ≤ 1` its albedo is at most `R + 1.0752 k_s ≤ 1.0752`
-/// (the maximum of the lobe's factor, at `p ≈ 8.76`), and it tends to `R + k_s` as `p` grows.
+/// (the maximum of the lobe's factor, at `p ≈ 8.76`; a gain [found by
+/// measurement](crate::errata#measured-2--normalised-blinn-phong-gain)), and it tends to
+/// `R + k_s` as `p` grows.
 ///
 /// **Sampling.** With probability `P_d = R̄/(R̄ + k̄_s)` (channel averages; `1` for a black
 /// model) the diffuse lobe, cosine-weighted; otherwise the half vector `h` with density
@@ -131,7 +140,8 @@ impl<S: Spectrum> BlinnPhong<S> {
     /// The largest accepted exponent.
     pub const MAX_EXPONENT: f32 = 1e6;
 
-    /// A Blinn-Phong BRDF with diffuse weight `kd` (the handout's reflectance `R`), specular
+    /// A Blinn-Phong BRDF with diffuse weight `kd` ([the handout's](crate::handouts#seed-003)
+    /// reflectance `R`), specular
     /// weight `ks`, exponent
     /// `exponent` and the lobe's `form`.
     ///
@@ -157,7 +167,7 @@ impl<S: Spectrum> BlinnPhong<S> {
         })
     }
 
-    /// The diffuse weight `k_d` (the handout's `R`).
+    /// The diffuse weight `k_d` ([the handout's](crate::handouts#seed-003) `R`).
     #[inline]
     #[must_use]
     pub fn kd(&self) -> S {
@@ -225,7 +235,8 @@ impl<S: Spectrum> BlinnPhong<S> {
     }
 }
 
-/// `K(p)`: 1 for the handout's form, `(p + 8)/(8π)` for the normalised one.
+/// `K(p)`: 1 for [the handout's](crate::handouts#seed-003) form, `(p + 8)/(8π)` for the normalised
+/// one.
 fn lobe_factor(form: BlinnPhongForm, p: f32) -> f32 {
     match form {
         BlinnPhongForm::Modified => 1.0,

@@ -16,7 +16,8 @@ use glam::Vec3;
 /// vector `h = (wi + wo)/|wi + wo|`, and `r` the perceptual [`Roughness`].
 ///
 /// Burley 2012, "Physically-Based Shading at Disney" (SIGGRAPH course notes), §5.3, eq. 4;
-/// named only in the handout (seed 000), spelled out in ERRATA #11. A Schlick-like
+/// named only in the handout ([seed 000](crate::handouts#seed-000)), spelled out in
+/// [ERRATA #11](crate::errata#erratum-11--disney-diffuse). A Schlick-like
 /// retro-reflection factor for each direction: smooth surfaces (`F_D90 = 0.5`) darken at
 /// grazing angles, rough ones (`F_D90` up to 2.5) brighten.
 ///
@@ -32,7 +33,8 @@ use glam::Vec3;
 /// # Laws
 ///
 /// Reciprocal (exactly: the formula is symmetric term by term, measured error 0) and
-/// positive. **Not energy-conserving** (ERRATA #11): the factors are not normalised, so the
+/// positive. **Not energy-conserving**
+/// ([ERRATA #11](crate::errata#erratum-11--disney-diffuse)): the factors are not normalised, so the
 /// directional albedo with `ρ = 1` is below 1 for smooth surfaces and above it for rough
 /// ones. Measured by quadrature of [`Bxdf::eval`](super::Bxdf::eval) (`tests/bxdf_disney_diffuse.rs`; agrees with
 /// an independent evaluation to 1e-6):

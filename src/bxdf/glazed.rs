@@ -1,4 +1,5 @@
-//! The handouts' glazed material: a diffuse base under a smooth dielectric coat.
+//! [The handouts'](crate::handouts#seed-003) glazed material: a diffuse base under a smooth dielectric
+//! coat.
 
 use super::{At, BxdfSample, Lobes, Prepare, both_above, delta_scale, usable_pdf};
 use crate::fresnel::dielectric;
@@ -17,7 +18,8 @@ use glam::{Vec2, Vec3};
 ///   + ρ/π · (1 − F(cos θo)) (1 − F(cos θi)) / (1 − F̄),     F̄ = 2 ∫₀¹ F(μ) μ dμ
 /// ```
 ///
-/// The handouts' "glazed" material (seed 003: "mirror reflection and diffuse"), made energy
+/// The handouts' "glazed" material ([seed 003](crate::handouts#seed-003): "mirror reflection and
+/// diffuse"), made energy
 /// conserving with the coupling of Kelemen & Szirmay-Kalos (2001, "A Microfacet Based Coupled
 /// Specular-Matte BRDF Model with Importance Sampling", eq. 5): the directional albedo is
 /// `F(cos θo) + (1 − F(cos θo)) ρ`, never above 1 and exactly 1 for `ρ = 1`. The diffuse

@@ -8,7 +8,8 @@ use glam::Vec3;
 
 /// Lambert's ideal diffuse reflector: `f = ρ / π` for `wo`, `wi` above the surface.
 ///
-/// Lambert 1760; the handouts' "Lambertian shading" (seed 003) with reflectance `R`. Sampled by
+/// Lambert 1760; the handouts' "Lambertian shading" ([seed 003](crate::handouts#seed-003))
+/// with reflectance `R`. Sampled by
 /// cosine-weighted directions, whose density `cos θi / π` makes the sample weight exactly `ρ`.
 ///
 /// Laws: reciprocal, positive, and its directional albedo is `ρ` for every `wo` (so it is

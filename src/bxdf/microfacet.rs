@@ -14,10 +14,12 @@ use glam::{Vec2, Vec3};
 /// f(wo, wi) = D(h) G2(wo, wi, h) F(wo·h) / (4 cos θo cos θi),     h = normalize(wo + wi)
 /// ```
 ///
-/// Cook & Torrance 1982, eq. 4 (the handouts' "Microfacet BRDF Model"); Walter et al. 2007,
+/// Cook & Torrance 1982, eq. 4 ([the handouts'](crate::handouts#seed-003) "Microfacet BRDF Model");
+/// Walter et al. 2007,
 /// eq. 20. Any [`NormalDistribution`] `D`, any [`Masking`] (height-correlated Smith by
-/// default, separable Smith, or Cook-Torrance's V-cavity), any [`Fresnel`] term `F`: the
-/// handouts' Cook-Torrance model is `Microfacet<Beckmann, _>` with [`Masking::VCavity`], a
+/// default, separable Smith, or Cook-Torrance's V-cavity), any [`Fresnel`] term `F`: [the
+/// handouts'](crate::handouts) Cook-Torrance model is `Microfacet<Beckmann, _>` with
+/// [`Masking::VCavity`], a
 /// modern metal is `Microfacet<Ggx, fresnel::Conductor<Vec3>>` with the default masking.
 ///
 /// Sampling: the distribution's own microfacet sampler (visible normals for GGX, with Eto &

@@ -10,7 +10,8 @@ use glam::Vec3;
 /// f(wo, wi) = F(cos θo) δ(wi − reflect(wo)) / |cos θi|
 /// ```
 ///
-/// The handouts' "Mirror reflection" (seed 003), with the Fresnel term that their "Specular
+/// The handouts' "Mirror reflection" ([seed 003](crate::handouts#seed-003)), with the Fresnel term that
+/// their "Specular
 /// reflection from metal/glass" slides describe; pbrt-v4 §9.3. Use [`NoFresnel`] for an ideal
 /// mirror, [`Conductor`] for a polished metal.
 ///

@@ -13,7 +13,8 @@ use glam::Vec3;
 /// `β = min(θi, θo)` and `σ` the standard deviation of the facet slope angle, in radians.
 ///
 /// Oren & Nayar 1994, "Generalization of Lambert's Reflectance Model" (SIGGRAPH '94),
-/// eq. 30; the handout's "Diffuse BRDFs" (seed 000), correct as printed (ERRATA #10). At
+/// eq. 30; the handout's "Diffuse BRDFs" ([seed 000](crate::handouts#seed-000)), correct as printed
+/// ([ERRATA #10](crate::errata#erratum-10--oren-nayar-energy)). At
 /// `σ = 0` it is Lambert's `ρ/π`.
 ///
 /// **Evaluation without trigonometry.** For unit directions `sin θ = |w.xy|`, so
@@ -32,7 +33,8 @@ use glam::Vec3;
 /// # Laws
 ///
 /// Reciprocal (exactly: the formula is symmetric in `wo`, `wi` term by term, measured error
-/// 0) and positive. **Not energy-conserving** (ERRATA #10): the model drops the light that
+/// 0) and positive. **Not energy-conserving**
+/// ([ERRATA #10](crate::errata#erratum-10--oren-nayar-energy)): the model drops the light that
 /// inter-reflects between facets, so it *loses* energy, most at normal incidence, and it
 /// also slightly *gains* at grazing for small `σ`. Its directional albedo has a closed form
 /// (integrate the term above against `cos θi`; see [`albedo`](Self::albedo)):
@@ -53,7 +55,9 @@ use glam::Vec3;
 ///
 /// The worst loss is `1 − A` at normal incidence (37.6 % at `σ = 1`, 44.1 % at `σ = π/2`).
 /// The largest albedo over all `σ` and `θo` is `A + B/2 = 1.0152` at `σ ≈ 0.199` and
-/// grazing `wo`: a gain of 1.5 %, so the energy bound holds only up to that factor. For a
+/// grazing `wo`: a gain of 1.5 % ([found by
+/// measurement](crate::errata#measured-1--oren-nayar-gain-at-grazing)), so the energy bound
+/// holds only up to that factor. For a
 /// rough diffuse model that keeps energy, use
 /// [`EnergyPreservingOrenNayar`](super::EnergyPreservingOrenNayar).
 ///

@@ -21,7 +21,8 @@ use glam::{Vec2, Vec3};
 ///
 /// for `wo`, `wi` above the surface (zero otherwise). Lafortune & Willems 1994, "Using the
 /// modified Phong reflectance model for physically based rendering", Tech. Rep. CW 197,
-/// KU Leuven, the BRDF and its normalisation (ERRATA #12: the handout names Phong only).
+/// KU Leuven, the BRDF and its normalisation
+/// ([ERRATA #12](crate::errata#erratum-12--phong-normalisation): the handout names Phong only).
 /// `r·wi` equals `wo·reflect(wi, n)`, so the lobe is reciprocal. The original Phong
 /// *shading* term `k_s (r·v)^p`, without the normalisation, is neither reciprocal nor
 /// energy-conserving and is not offered.

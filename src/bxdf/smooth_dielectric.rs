@@ -15,7 +15,8 @@ use glam::Vec3;
 /// f_t = (1 − F) δ(wi − refract(wo)) / |cos θi| / η'²      (radiance mode)
 /// ```
 ///
-/// The handouts' refraction (seed 003, "Refraction at boundary of media", "Fresnel's
+/// The handouts' refraction ([seed 003](crate::handouts#seed-003), "Refraction at boundary of media",
+/// "Fresnel's
 /// formulas"); pbrt-v4 §9.5. `η'` is the relative index the path crosses (`η` entering, `1/η`
 /// leaving); the `1/η'²` radiance scaling applies in [`TransportMode::Radiance`] only (Veach
 /// 1997, §5.2). `wo` may be on either side; total internal reflection gives `F = 1`.

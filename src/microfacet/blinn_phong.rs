@@ -14,7 +14,9 @@ use glam::{Vec2, Vec3};
 /// ```
 ///
 /// with the exponent `p = 2/α² − 2` tied to the Beckmann width `α` (Walter et al. 2007,
-/// eqs. 30–32; the handout's form, ERRATA #8: `(p + 2)/(2π) = 1/(π α²)`). Widths
+/// eqs. 30–32; [the handout's](crate::handouts#seed-000) form,
+/// [ERRATA #8](crate::errata#erratum-8--normalised-blinn-phong-distribution):
+/// `(p + 2)/(2π) = 1/(π α²)`). Widths
 /// `α ∈ [1e-4, 1]`, exponents `p ∈ [0, 2·10⁸)` (`from_exponent` takes `[0, 10⁸]`); `α = 1`
 /// is `p = 0`, the uniform `D = 1/π`. (A width above 1 would make `p` negative and `D`
 /// infinite at grazing.)

@@ -16,8 +16,10 @@ use glam::{Vec2, Vec3};
 /// c = α² / π                                     γ = 2   (GGX)
 /// ```
 ///
-/// Burley 2012, "Physically-Based Shading at Disney", appendix B.2, eqs. 4–5; the handout
-/// omits `c` (ERRATA #3). `α ∈ [1e-4, 10]` ([`Alpha`]), `γ ∈ (0, 10]`; `α = 1` is the
+/// Burley 2012, "Physically-Based Shading at Disney", appendix B.2, eqs. 4–5; [the
+/// handout](crate::handouts#seed-000) omits `c`
+/// ([ERRATA #3](crate::errata#erratum-3--gtr-normalisation)).
+/// `α ∈ [1e-4, 10]` ([`Alpha`]), `γ ∈ (0, 10]`; `α = 1` is the
 /// uniform `D = 1/π` for every `γ`.
 ///
 /// **Masking.** GTR has no closed-form Smith `Λ` for general `γ`. This type computes the
@@ -107,7 +109,8 @@ impl Shape {
         }
     }
 
-    /// `D` from `cos² θm` and `sin² θm`: `c / (sin² θ + α² cos² θ)^γ`, the handout's
+    /// `D` from `cos² θm` and `sin² θm`: `c / (sin² θ + α² cos² θ)^γ`, [the
+    /// handout's](crate::handouts#seed-000)
     /// `1 + (α² − 1) cos² θ` written so that it does not cancel near the normal.
     #[inline]
     fn d(&self, cos2: f32, sin2: f32) -> f32 {
@@ -141,7 +144,8 @@ impl Shape {
     }
 }
 
-/// `ln c` for the normalisation `c` of ERRATA #3, in log form because `c` and `(α²)^(−γ)`
+/// `ln c` for the normalisation `c` of [ERRATA #3](crate::errata#erratum-3--gtr-normalisation), in log
+/// form because `c` and `(α²)^(−γ)`
 /// under- and overflow `f32` for small `α` and large `γ`; accurate as `α → 1` (where
 /// `c → 1/π`) and across `γ = 1`.
 fn ln_normalisation(t: f32, ln_a2: f32, gamma: f32) -> f32 {

@@ -15,12 +15,13 @@ pub enum Masking {
     HeightCorrelated,
     /// Separable Smith, `G1(wo) G1(wi)` (Heitz 2014, eq. 98): Mitsuba 3's choice.
     Separable,
-    /// Cook & Torrance's V-cavity term (Cook & Torrance 1982, eq. 5; ERRATA #2):
+    /// Cook & Torrance's V-cavity term (Cook & Torrance 1982, eq. 5;
+    /// [ERRATA #2](crate::errata#erratum-2--v-cavity-factor-two)):
     /// `min(1, 2 (n·h)(n·wo)/(wo·h), 2 (n·h)(n·wi)/(wo·h))`. It ignores `Λ`: it models a
     /// microsurface of V-shaped grooves rather than a random height field, but a consistent
     /// one, whose masking conserves the projected area (Heitz 2014, §4.3; measured within the
-    /// Monte Carlo error by the crate's tests). It exists to build the handouts'
-    /// Cook-Torrance model.
+    /// Monte Carlo error by the crate's tests). It exists to build [the
+    /// handouts'](crate::handouts) Cook-Torrance model.
     VCavity,
 }
 

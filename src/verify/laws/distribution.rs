@@ -47,7 +47,8 @@ pub fn d_normalization<D: NormalDistribution + ?Sized>(dist: &D, config: &Config
 }
 
 /// `∫ G1(wo) max(0, wo·m) D(m) dωm`, which must be `cos θo` for a masking function that
-/// conserves the projected area (Heitz 2014, eq. 14; the handout's fourth law).
+/// conserves the projected area (Heitz 2014, eq. 14; [the handout's](crate::handouts#seed-000) fourth
+/// law).
 #[must_use]
 pub fn projected_area<D: NormalDistribution + ?Sized>(
     dist: &D,
