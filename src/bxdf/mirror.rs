@@ -32,6 +32,13 @@ impl<F: Fresnel> Mirror<F> {
     pub fn new(fresnel: F) -> Self {
         Self { fresnel }
     }
+
+    /// The Fresnel term.
+    #[inline]
+    #[must_use]
+    pub fn fresnel(&self) -> &F {
+        &self.fresnel
+    }
 }
 
 impl<F: Fresnel> Prepare for Mirror<F> {

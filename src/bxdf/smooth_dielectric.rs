@@ -44,6 +44,20 @@ impl SmoothDielectric {
     pub fn with_mode(self, mode: TransportMode) -> Self {
         Self { mode, ..self }
     }
+
+    /// The relative index `η_inside / η_outside`.
+    #[inline]
+    #[must_use]
+    pub fn eta(&self) -> Eta {
+        self.eta
+    }
+
+    /// Whether the model transports radiance or importance ([`with_mode`](Self::with_mode)).
+    #[inline]
+    #[must_use]
+    pub fn mode(&self) -> TransportMode {
+        self.mode
+    }
 }
 
 impl Prepare for SmoothDielectric {

@@ -41,6 +41,13 @@ impl ThinDielectric {
             1.0
         }
     }
+
+    /// The relative index `η_inside / η_outside` of the sheet.
+    #[inline]
+    #[must_use]
+    pub fn eta(&self) -> Eta {
+        self.eta
+    }
 }
 
 impl Prepare for ThinDielectric {
