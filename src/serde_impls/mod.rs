@@ -30,8 +30,9 @@
 //! * **No type tags.** A model's Rust type says which distribution and Fresnel term it holds,
 //!   so the file does not repeat it. A scene whose materials are of different types tells them
 //!   apart with an enum of its own, tagged as it likes (the example below).
-//! * **Self-describing formats** (JSON, RON, TOML, YAML): a field left out must be recognisable
-//!   as missing, which formats that read fields by position (bincode, postcard) cannot do.
+//! * **Self-describing formats** such as JSON, RON, TOML or YAML (the crate's tests use JSON):
+//!   a field left out must be recognisable as missing, which formats that read fields by
+//!   position (bincode, postcard) cannot do.
 //!
 //! | type | in a JSON file |
 //! | --- | --- |
@@ -181,7 +182,6 @@ fn yes() -> bool {
 }
 
 /// Whether a switch that is on by default is on: such a field is left out on the way out.
-#[allow(clippy::trivially_copy_pass_by_ref)] // serde's `skip_serializing_if` passes a reference
 fn is_true(v: &bool) -> bool {
     *v
 }
