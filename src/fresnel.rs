@@ -385,6 +385,13 @@ impl<S: Spectrum> Schlick<S> {
             f0: crate::param::unit_interval("f0", f0)?,
         })
     }
+
+    /// The normal-incidence reflectance `f0`.
+    #[inline]
+    #[must_use]
+    pub fn f0(&self) -> S {
+        self.f0
+    }
 }
 
 impl<S: Spectrum> Fresnel for Schlick<S> {

@@ -108,6 +108,8 @@ pub mod microfacet;
 
 pub mod param;
 pub mod sampling;
+#[cfg(feature = "serde")]
+pub mod serde_impls;
 pub mod sh;
 pub mod spectrum;
 #[cfg(feature = "verify")]

@@ -77,6 +77,20 @@ impl<S: Spectrum> Glazed<S> {
         let total = f + diffuse;
         (if total > 0.0 { f / total } else { 0.0 }, f)
     }
+
+    /// The diffuse base's reflectance.
+    #[inline]
+    #[must_use]
+    pub fn reflectance(&self) -> S {
+        self.reflectance
+    }
+
+    /// The coat's relative index `η_inside / η_outside`.
+    #[inline]
+    #[must_use]
+    pub fn eta(&self) -> Eta {
+        self.eta
+    }
 }
 
 impl<S: Spectrum> Prepare for Glazed<S> {

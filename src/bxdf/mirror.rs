@@ -33,6 +33,13 @@ impl<F: Fresnel> Mirror<F> {
         Self { fresnel }
     }
 
+    /// The Fresnel term.
+    #[inline]
+    #[must_use]
+    pub fn fresnel(&self) -> &F {
+        &self.fresnel
+    }
+
     /// `sample` (its lobes are delta lobes: `eval` and `pdf` are zero).
     #[inline]
     fn sample_delta(&self, wo: Vec3, _uc: f32) -> Option<BxdfSample<F::Spectrum>> {

@@ -97,6 +97,27 @@ impl<D: NormalDistribution, S: Spectrum> Plastic<D, S> {
         let total = e + (1.0 - e) * self.reflectance.average();
         if total > 0.0 { e / total } else { 1.0 }
     }
+
+    /// The diffuse base's reflectance.
+    #[inline]
+    #[must_use]
+    pub fn reflectance(&self) -> S {
+        self.reflectance
+    }
+
+    /// The coat's distribution of microfacet normals.
+    #[inline]
+    #[must_use]
+    pub fn distribution(&self) -> &D {
+        self.coat.distribution()
+    }
+
+    /// The coat's relative index `η_inside / η_outside`.
+    #[inline]
+    #[must_use]
+    pub fn eta(&self) -> Eta {
+        self.coat.fresnel().eta
+    }
 }
 
 /// What [`Plastic`] keeps about `wo` ([`Prepare::prepare`]): the coat's prepared state, the

@@ -276,6 +276,20 @@ impl<D: NormalDistribution> RoughDielectric<D> {
     pub fn masking(&self) -> Masking {
         self.masking
     }
+
+    /// The distribution of microfacet normals.
+    #[inline]
+    #[must_use]
+    pub fn distribution(&self) -> &D {
+        &self.distribution
+    }
+
+    /// Whether the model transports radiance or importance ([`with_mode`](Self::with_mode)).
+    #[inline]
+    #[must_use]
+    pub fn mode(&self) -> TransportMode {
+        self.mode
+    }
 }
 
 impl<D: NormalDistribution> Prepare for RoughDielectric<D> {

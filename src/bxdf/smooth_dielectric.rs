@@ -46,6 +46,20 @@ impl SmoothDielectric {
         Self { mode, ..self }
     }
 
+    /// The relative index `η_inside / η_outside`.
+    #[inline]
+    #[must_use]
+    pub fn eta(&self) -> Eta {
+        self.eta
+    }
+
+    /// Whether the model transports radiance or importance ([`with_mode`](Self::with_mode)).
+    #[inline]
+    #[must_use]
+    pub fn mode(&self) -> TransportMode {
+        self.mode
+    }
+
     /// `sample` (its lobes are delta lobes: `eval` and `pdf` are zero).
     #[inline]
     fn sample_delta(&self, wo: Vec3, uc: f32) -> Option<BxdfSample<f32>> {

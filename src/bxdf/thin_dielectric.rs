@@ -42,6 +42,13 @@ impl ThinDielectric {
         }
     }
 
+    /// The relative index `η_inside / η_outside` of the sheet.
+    #[inline]
+    #[must_use]
+    pub fn eta(&self) -> Eta {
+        self.eta
+    }
+
     /// `sample` (its lobes are delta lobes: `eval` and `pdf` are zero).
     #[inline]
     fn sample_delta(&self, wo: Vec3, uc: f32) -> Option<BxdfSample<f32>> {
