@@ -63,7 +63,7 @@
 //! | `libm` | no | the `no_std` math path (`--no-default-features --features libm`) |
 //! | `verify` | no | [`verify`]: the law checks, Monte Carlo estimators with standard errors, the chi-square test, and the seeded [`Pcg32`](verify::Pcg32), which implements `rand_core`'s `RngCore` and `SeedableRng` (implies `std`) |
 //! | `proptest` | no | `verify::strategies`: proptest strategies for directions, α, η and complex indices (implies `verify`) |
-//! | `serde` | no | `Serialize`/`Deserialize` for [`Alpha`], [`Roughness`], [`Eta`], [`Ior`], [`ComplexIor`] (validated on the way in: `alpha = -1` is refused with the parameter's name and range, see [`param`]) and [`metals::Metal`] (by name); turns on glam's `serde` |
+//! | `serde` | no | `Serialize`/`Deserialize` for the parameters ([`Alpha`], [`Roughness`], [`Eta`], [`Ior`], [`ComplexIor`], see [`param`]), [`metals::Metal`] (by name) and every model, distribution and Fresnel term (as their constructors' parameters, see `serde_impls`), validated on the way in: `alpha = -1` is refused with the parameter's name and range; turns on glam's `serde` |
 //! | `approx` | no | `approx` 0.5's `AbsDiffEq`/`RelativeEq` for [`bxdf::BxdfSample`] and `verify::Estimate`; turns on glam's `approx-05` |
 //! | `mint` | no | glam's `mint-05`: conversions between [`Vec3`] & co. and `mint` 0.5's types |
 //! | `bytemuck` | no | glam's `bytemuck`: `Pod`/`Zeroable` for [`Vec3`] & co. |
