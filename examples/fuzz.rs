@@ -143,7 +143,7 @@ fn paired(wo: Vec3, pair: Pair, eta: Option<Eta>, rng: &mut Pcg32) -> Vec3 {
         Pair::Opposite => -wo,
         Pair::Mirror => mirror,
         Pair::Refracted => eta
-            .and_then(|eta| lobe::frame::refract(wo, Vec3::Z, eta))
+            .and_then(|eta| lobe::frame::refract_away(wo, Vec3::Z, eta))
             .unwrap_or(mirror),
         Pair::NearMirror => {
             let t = 1e-3 * (Vec3::new(rng.next_f32(), rng.next_f32(), rng.next_f32()) - 0.5);

@@ -153,10 +153,12 @@ pub fn same_hemisphere(a: Vec3, b: Vec3) -> bool {
 /// The mirror reflection of `w` about the unit normal `n`: `2 (w·n) n − w`.
 ///
 /// `w` points away from the surface, and so does the result ([seed 003](crate::handouts#seed-003),
-/// "Mirror reflection").
+/// "Mirror reflection"): the crate's convention, pbrt's `Reflect`. The name says so because
+/// glam's `Vec3::reflect` takes a direction pointing *toward* the surface and returns
+/// `w − 2 (w·n) n`, the negative of this one.
 #[inline(always)]
 #[must_use]
-pub fn reflect(w: Vec3, n: Vec3) -> Vec3 {
+pub fn reflect_away(w: Vec3, n: Vec3) -> Vec3 {
     2.0 * w.dot(n) * n - w
 }
 
@@ -168,9 +170,14 @@ pub fn reflect(w: Vec3, n: Vec3) -> Vec3 {
 /// result points away from the surface on the other side and obeys Snell's law
 /// `η_i sin θ_i = η_t sin θ_t`. Total internal reflection happens exactly when
 /// `(η_i/η_t)² sin² θ_i > 1`. (PBR 4th ed., §9.3.2, eq. 9.5 and the vector form after it.)
+///
+/// Unlike glam's `Vec3::refract_away(self, normal, eta)` — an incident direction pointing toward
+/// the surface, `eta` the ratio `η_i/η_t`, a zero vector on total internal reflection — this
+/// takes a direction pointing away, the crate's *relative* index [`Eta`] (inside over
+/// outside, whichever side `w` is on), and returns `None` on total internal reflection.
 #[inline(always)]
 #[must_use]
-pub fn refract(w: Vec3, n: Vec3, eta: Eta) -> Option<Vec3> {
+pub fn refract_away(w: Vec3, n: Vec3, eta: Eta) -> Option<Vec3> {
     let mut cos_i = w.dot(n);
     // η_t / η_i, and the normal turned toward w's side.
     let (eta_ti_inv, n) = if cos_i >= 0.0 {
@@ -211,7 +218,7 @@ mod tests {
     #[test]
     fn reflect_mirrors_about_the_normal() {
         let w = Vec3::new(0.6, 0.0, 0.8);
-        assert!((reflect(w, Vec3::Z) - Vec3::new(-0.6, 0.0, 0.8)).length() < 1e-6);
+        assert!((reflect_away(w, Vec3::Z) - Vec3::new(-0.6, 0.0, 0.8)).length() < 1e-6);
     }
 
     #[test]

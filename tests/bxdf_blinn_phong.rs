@@ -156,7 +156,7 @@ fn sharp_lobes_are_consistent_and_bounded() {
         assert_consistent(&model, 1e-4);
         // Pairs whose half vector is within a few lobe widths of the normal.
         let pairs = near_lobe_pairs(p, |wo, d| {
-            lobe::frame::reflect(wo, Vec3::new(d.x, d.y, 1.0).normalize()).normalize()
+            lobe::frame::reflect_away(wo, Vec3::new(d.x, d.y, 1.0).normalize()).normalize()
         });
         assert_reciprocity_bit_exact(&model.name, model.bxdf.as_ref(), &pairs, true);
         // The closed form in f64: at p = 10⁶ the estimate's standard error (1e-8) is below
@@ -234,7 +234,7 @@ fn large_exponents_keep_their_shape_near_the_normal() {
         let wo = Vec3::new(0.48, 0.36, 0.8);
         for beta in [0.0_f32, 1e-4, 3e-4, 1e-3, 3e-3] {
             let h = Vec3::new(beta.sin() * 0.6, beta.sin() * 0.8, beta.cos());
-            let wi = lobe::frame::reflect(wo, h).normalize();
+            let wi = lobe::frame::reflect_away(wo, h).normalize();
             let s = [
                 f64::from(wo.x) + f64::from(wi.x),
                 f64::from(wo.y) + f64::from(wi.y),

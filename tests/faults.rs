@@ -16,7 +16,7 @@
 
 use core::f32::consts::PI;
 use lobe::bxdf::{Bxdf, BxdfSample, Lambert, Lobes, Microfacet, RoughDielectric, TransportMode};
-use lobe::frame::reflect;
+use lobe::frame::reflect_away;
 use lobe::fresnel::{self, Fresnel, Schlick};
 use lobe::microfacet::{Ggx, Masking, NormalDistribution};
 use lobe::sampling::{cosine_hemisphere, cosine_hemisphere_pdf};
@@ -426,7 +426,7 @@ impl Bxdf for BuggyGlossy {
                     return None;
                 }
                 let m = self.dist().sample_reflection(&self.dist().view(wo), u);
-                let wi = reflect(wo, m);
+                let wi = reflect_away(wo, m);
                 // Missing: `if !(wi.z > 0.0) { return None; }`
                 let pdf = self.sampler_density(wo, m) / (4.0 * wo.dot(m));
                 reflection(wi, self.good.eval(wo, wi), pdf, Lobes::GLOSSY_REFLECTION)
@@ -632,7 +632,7 @@ struct PhongLobe {
 
 impl PhongLobe {
     fn cos_alpha(wo: Vec3, wi: Vec3) -> f32 {
-        reflect(wo, Vec3::Z).dot(wi).min(1.0)
+        reflect_away(wo, Vec3::Z).dot(wi).min(1.0)
     }
 }
 
@@ -653,7 +653,7 @@ impl Bxdf for PhongLobe {
         let cos_a = u.x.powf(1.0 / (self.n + 1.0));
         let sin_a = (1.0 - cos_a * cos_a).max(0.0).sqrt();
         let (s, c) = (2.0 * PI * u.y).sin_cos();
-        let frame = lobe::Frame::from_normal(reflect(wo, Vec3::Z));
+        let frame = lobe::Frame::from_normal(reflect_away(wo, Vec3::Z));
         let wi = frame.to_world(Vec3::new(sin_a * c, sin_a * s, cos_a));
         if !(wi.z > 0.0) {
             return None;

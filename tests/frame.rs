@@ -3,7 +3,7 @@
 
 mod common;
 
-use lobe::frame::{reflect, refract};
+use lobe::frame::{reflect_away, refract_away};
 use lobe::{Eta, Frame, Vec3};
 use proptest::prelude::*;
 
@@ -53,7 +53,7 @@ proptest! {
 
     #[test]
     fn reflection_keeps_the_angle_and_the_plane(n in unit_vector(), w in unit_vector()) {
-        let r = reflect(w, n);
+        let r = reflect_away(w, n);
         prop_assert!((r.length() - 1.0).abs() < 1e-5);
         prop_assert!((r.dot(n) - w.dot(n)).abs() < 1e-5);
         // Coplanar with w and n, and w + r lies along n.
@@ -69,7 +69,7 @@ proptest! {
         // sin θ from the tangential components, which keep their digits near the normal.
         let sin = |v: Vec3| (v.x as f64).hypot(v.y as f64);
         let sin2_t = (eta_it as f64 * sin(w)).powi(2);
-        match refract(w, n, eta) {
+        match refract_away(w, n, eta) {
             None => prop_assert!(sin2_t > 1.0 - 1e-5, "no refraction though sin²θt = {}", sin2_t),
             Some(t) => {
                 prop_assert!(sin2_t <= 1.0 + 1e-5, "refracted though sin²θt = {}", sin2_t);
@@ -87,7 +87,7 @@ proptest! {
                 // sin²θ = sin²θ_i, so skip w within 2° of grazing, where it is itself at the
                 // edge of total internal reflection and f32 cannot decide.
                 if cos_i.abs() > 0.035 && t.z.abs() > 1e-3 {
-                    let back = refract(t, n, eta).expect("the way back never reflects totally");
+                    let back = refract_away(t, n, eta).expect("the way back never reflects totally");
                     // The vector form adds terms of size η' = η_i/η_t that cancel to a unit
                     // vector, so each refraction's absolute error is a few ε·(1 + η'); the
                     // way back uses 1/η'. cos θ = √(1 − sin²θ) then amplifies an error in
@@ -113,14 +113,14 @@ fn total_internal_reflection_exactly_past_the_critical_angle() {
         (0.3, false),
     ] {
         let w = Vec3::new(theta.sin(), 0.0, -theta.cos()); // inside the glass
-        assert_eq!(refract(w, Vec3::Z, eta).is_none(), tir, "θ = {theta}");
+        assert_eq!(refract_away(w, Vec3::Z, eta).is_none(), tir, "θ = {theta}");
     }
     // From the outside there is never total internal reflection into a denser medium.
     for theta in [0.0f32, 0.7, 1.5, core::f32::consts::FRAC_PI_2 - 1e-6] {
         let w = Vec3::new(theta.sin(), 0.0, theta.cos());
-        assert!(refract(w, Vec3::Z, eta).is_some());
+        assert!(refract_away(w, Vec3::Z, eta).is_some());
     }
     // Normal incidence goes straight through.
-    let t = refract(Vec3::Z, Vec3::Z, eta).unwrap();
+    let t = refract_away(Vec3::Z, Vec3::Z, eta).unwrap();
     assert!((t + Vec3::Z).length() < 1e-6);
 }

@@ -356,7 +356,7 @@ fn bounded_sampler_loses_fewer_samples_below_the_horizon() {
             let (mut lost_vndf, mut lost_bounded) = (0, 0);
             for _ in 0..n {
                 let u = rng.next_vec2();
-                let below = |m: Vec3| lobe::frame::reflect(wo, m).z <= 0.0;
+                let below = |m: Vec3| lobe::frame::reflect_away(wo, m).z <= 0.0;
                 lost_vndf += usize::from(below(ggx.sample(&ggx.view(wo), u)));
                 lost_bounded += usize::from(below(ggx.sample_visible_bounded(wo, u)));
             }

@@ -10,7 +10,7 @@ use crate::shading::ShadingPoint;
 use core::f32::consts::FRAC_1_PI;
 use lobe::Vec3;
 use lobe::bxdf::Lobes;
-use lobe::frame::refract;
+use lobe::frame::refract_away;
 use lobe::fresnel;
 use lobe::verify::Pcg32;
 
@@ -128,7 +128,7 @@ impl Whitted {
             Interface::Dielectric(eta) => {
                 let f = fresnel::dielectric(wo.z, eta);
                 l += spawn(mirror, Vec3::splat(f), labels);
-                if let Some(t) = refract(wo, Vec3::Z, eta) {
+                if let Some(t) = refract_away(wo, Vec3::Z, eta) {
                     l += spawn(sp.frame.to_world(t), Vec3::splat(1.0 - f), labels);
                 }
             }

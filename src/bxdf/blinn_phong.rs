@@ -5,7 +5,7 @@ use super::diffuse_glossy::{
     check_exponent, check_sum, cos_power_norm, diffuse_probability, weighted_lobes,
 };
 use super::{BxdfSample, Lobes, Prepare, both_above, usable_pdf};
-use crate::frame::reflect;
+use crate::frame::reflect_away;
 use crate::math::{cos_pow, exp, sqrt};
 use crate::param::ParamError;
 use crate::sampling::{cosine_hemisphere, cosine_hemisphere_pdf};
@@ -82,7 +82,7 @@ pub enum BlinnPhongForm {
 ///
 /// **Sampling.** With probability `P_d = R̄/(R̄ + k̄_s)` (channel averages; `1` for a black
 /// model) the diffuse lobe, cosine-weighted; otherwise the half vector `h` with density
-/// `(p + 1)/(2π) (n·h)^p` and `wi = reflect(wo, h)`, whose density is that over
+/// `(p + 1)/(2π) (n·h)^p` and `wi = reflect_away(wo, h)`, whose density is that over
 /// `4 (wo·h)`. A reflected direction below the horizon is the sampler's missing mass:
 /// `sample` returns `None`. [`Bxdf::pdf`](super::Bxdf::pdf) is the mixture of the two densities and a sample's
 /// `f` the whole BRDF.
@@ -271,7 +271,7 @@ impl<S: Spectrum> Prepare for BlinnPhong<S> {
             (cosine_hemisphere(u), Lobes::DIFFUSE_REFLECTION)
         } else {
             let h = crate::sampling::cosine_power_hemisphere(u, self.exponent);
-            (reflect(wo, h), Lobes::GLOSSY_REFLECTION)
+            (reflect_away(wo, h), Lobes::GLOSSY_REFLECTION)
         };
         // Also catches wo·h ≤ 0, which reflects wo below the surface.
         if !(wi.z > 0.0) {

@@ -14,7 +14,7 @@ use glam::{Vec2, Vec3};
 /// diffuse light is weighted by what the coat lets through on the way in and out:
 ///
 /// ```text
-/// f = F(cos θo) δ(wi − reflect(wo)) / cos θi
+/// f = F(cos θo) δ(wi − reflect_away(wo)) / cos θi
 ///   + ρ/π · (1 − F(cos θo)) (1 − F(cos θi)) / (1 − F̄),     F̄ = 2 ∫₀¹ F(μ) μ dμ
 /// ```
 ///

@@ -2,7 +2,7 @@
 //! Fresnel term.
 
 use super::{At, BxdfSample, Lobes, Prepare, both_above, usable_pdf};
-use crate::frame::reflect;
+use crate::frame::reflect_away;
 use crate::fresnel::{self, Fresnel};
 use crate::microfacet::{Masking, NormalDistribution, View};
 use crate::spectrum::Spectrum;
@@ -172,7 +172,7 @@ impl<D: NormalDistribution, F: Fresnel> Microfacet<D, F> {
             return None;
         }
         let m = self.distribution.sample_reflection(&at.state, u);
-        let wi = reflect(at.wo, m);
+        let wi = reflect_away(at.wo, m);
         // Evaluate at wo + wi, as `eval` and `pdf` do, rather than at `m`: the two differ by
         // rounding, and a renderer's MIS needs `pdf` to reproduce the sample's density
         // exactly. D once, for both the value and the density.

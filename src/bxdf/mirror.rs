@@ -7,7 +7,7 @@ use glam::Vec3;
 /// Perfect specular reflection, `wi = 2 (wo·n) n − wo`, with reflectance `F(cos θo)`:
 ///
 /// ```text
-/// f(wo, wi) = F(cos θo) δ(wi − reflect(wo)) / |cos θi|
+/// f(wo, wi) = F(cos θo) δ(wi − reflect_away(wo)) / |cos θi|
 /// ```
 ///
 /// The handouts' "Mirror reflection" ([seed 003](crate::handouts#seed-003)), with the Fresnel term that

@@ -16,14 +16,14 @@ use glam::{Vec2, Vec3};
 /// the mirror direction,
 ///
 /// ```text
-/// f(wo, wi) = k_d/π + k_s (p + 2)/(2π) max(0, r·wi)^p,    r = reflect(wo, n) = (−wo.x, −wo.y, wo.z)
+/// f(wo, wi) = k_d/π + k_s (p + 2)/(2π) max(0, r·wi)^p,    r = reflect_away(wo, n) = (−wo.x, −wo.y, wo.z)
 /// ```
 ///
 /// for `wo`, `wi` above the surface (zero otherwise). Lafortune & Willems 1994, "Using the
 /// modified Phong reflectance model for physically based rendering", Tech. Rep. CW 197,
 /// KU Leuven, the BRDF and its normalisation
 /// ([ERRATA #12](crate::errata#erratum-12--phong-normalisation): the handout names Phong only).
-/// `r·wi` equals `wo·reflect(wi, n)`, so the lobe is reciprocal. The original Phong
+/// `r·wi` equals `wo·reflect_away(wi, n)`, so the lobe is reciprocal. The original Phong
 /// *shading* term `k_s (r·v)^p`, without the normalisation, is neither reciprocal nor
 /// energy-conserving and is not offered.
 ///
@@ -164,7 +164,7 @@ impl<S: Spectrum> Phong<S> {
         self.kd + self.ks
     }
 
-    /// `cos^p α` for the angle `α` between `r = reflect(wo, n)` and `wi`, zero beyond 90°.
+    /// `cos^p α` for the angle `α` between `r = reflect_away(wo, n)` and `wi`, zero beyond 90°.
     #[inline]
     fn lobe(&self, wo: Vec3, wi: Vec3) -> f32 {
         // r − wi up to the sign of x and y, which the square drops; symmetric in wo, wi.

@@ -1,7 +1,7 @@
 //! Walter et al.'s rough dielectric: microfacet reflection and refraction.
 
 use super::{At, BxdfSample, Lobes, Prepare, TransportMode, usable_pdf};
-use crate::frame::{reflect, refract};
+use crate::frame::{reflect_away, refract_away};
 use crate::fresnel::{dielectric, dielectric_refracted};
 use crate::microfacet::{Masking, NormalDistribution, View};
 use crate::param::Eta;
@@ -241,9 +241,9 @@ impl<D: NormalDistribution> RoughDielectric<D> {
         let m = self.distribution.sample(&at.state, u);
         let f = dielectric(wo.dot(m), self.eta);
         let wi = if uc < f {
-            reflect(wo, m)
+            reflect_away(wo, m)
         } else {
-            refract(wo, m, self.eta)?
+            refract_away(wo, m, self.eta)?
         };
         // Evaluate at the configuration of (wo, wi), as `eval` and `pdf` do.
         let c = self.configuration(wo, wi)?;

@@ -1,7 +1,7 @@
 //! A smooth dielectric interface: delta reflection and refraction with the exact Fresnel term.
 
 use super::{BxdfSample, Lobes, TransportMode, delta_scale};
-use crate::frame::refract;
+use crate::frame::refract_away;
 use crate::fresnel::dielectric;
 use crate::param::Eta;
 use glam::Vec3;
@@ -11,8 +11,8 @@ use glam::Vec3;
 /// reflectance ([`dielectric`]):
 ///
 /// ```text
-/// f_r = F δ(wi − reflect(wo)) / |cos θi|
-/// f_t = (1 − F) δ(wi − refract(wo)) / |cos θi| / η'²      (radiance mode)
+/// f_r = F δ(wi − reflect_away(wo)) / |cos θi|
+/// f_t = (1 − F) δ(wi − refract_away(wo)) / |cos θi| / η'²      (radiance mode)
 /// ```
 ///
 /// The handouts' refraction ([seed 003](crate::handouts#seed-003), "Refraction at boundary of media",
@@ -78,7 +78,7 @@ impl SmoothDielectric {
             });
         }
         let t = 1.0 - r;
-        let wi = refract(wo, Vec3::Z, self.eta)?;
+        let wi = refract_away(wo, Vec3::Z, self.eta)?;
         if !(wi.z != 0.0 && t > 0.0) {
             return None;
         }
