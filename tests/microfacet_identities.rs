@@ -49,8 +49,9 @@ fn exact(kind: u8, ax: f32, ay: f32, gamma: f32) -> Box<dyn SampleDCos> {
     }
 }
 
+/// Equal to within `rel` of the larger magnitude (`approx`'s relative comparison).
 fn close(a: f32, b: f32, rel: f32) -> bool {
-    a == b || (a - b).abs() <= rel * a.abs().max(b.abs())
+    approx::relative_eq!(a, b, epsilon = 0.0, max_relative = rel)
 }
 
 proptest! {
