@@ -458,38 +458,34 @@ fn batched_calls_do_not_allocate() {
     );
     let lambert = Lambert::new(Vec3::new(0.8, 0.5, 0.2)).unwrap();
     let glass = RoughDielectric::new(Ggx::isotropic(alpha(0.3)), eta(1.5));
+    // All three calls of an RGB model into the seven buffers.
+    fn rgb_calls<M: Batch<Spectrum = Vec3>>(
+        m: &M,
+        wo: Vec3s,
+        wi: Vec3s,
+        u: Vec2s,
+        uc: &[f32],
+        o: &mut [Vec<f32>],
+    ) {
+        let [a, b, c, d, e, f, g] = o else {
+            unreachable!()
+        };
+        m.eval_batch(wo, wi, rgb(a, b, c)).unwrap();
+        m.pdf_batch(wo, wi, d).unwrap();
+        let out = SampleOut {
+            wi: rgb(a, b, c),
+            f: rgb(d, e, f),
+            pdf: g,
+        };
+        m.sample_batch(wo, u, uc, out).unwrap();
+    }
     let ((), calls) = count_calls(|| {
+        rgb_calls(&conductor, wo, wi, u, &i.uc, &mut out);
+        rgb_calls(&schlick, wo, wi, u, &i.uc, &mut out);
+        rgb_calls(&lambert, wo, wi, u, &i.uc, &mut out);
         let [a, b, c, d, e, f, g] = &mut out[..] else {
             unreachable!()
         };
-        conductor.eval_batch(wo, wi, rgb(a, b, c)).unwrap();
-        conductor.pdf_batch(wo, wi, d).unwrap();
-        conductor
-            .sample_batch(
-                wo,
-                u,
-                &i.uc,
-                SampleOut {
-                    wi: rgb(a, b, c),
-                    f: rgb(d, e, f),
-                    pdf: g,
-                },
-            )
-            .unwrap();
-        schlick.eval_batch(wo, wi, rgb(a, b, c)).unwrap();
-        lambert.eval_batch(wo, wi, rgb(a, b, c)).unwrap();
-        lambert
-            .sample_batch(
-                wo,
-                u,
-                &i.uc,
-                SampleOut {
-                    wi: rgb(a, b, c),
-                    f: rgb(d, e, f),
-                    pdf: g,
-                },
-            )
-            .unwrap();
         glass.eval_batch(wo, wi, &mut *a).unwrap();
         glass.pdf_batch(wo, wi, &mut *b).unwrap();
         glass
