@@ -3,6 +3,9 @@
 //! constructor, so a file cannot describe a model that breaks the "total" promise, and a
 //! refusal names the field and its range.
 
+mod common;
+
+use common::wire::{assert_refused, assert_wire, round_trip};
 use lobe::bxdf::{
     BlinnPhong, BlinnPhongForm, Bxdf, DisneyDiffuse, EnergyPreservingOrenNayar, Glazed, Lambert,
     Microfacet, Mirror, Mono, OrenNayar, Phong, Plastic, RoughConductor, RoughDielectric,
@@ -22,27 +25,6 @@ fn alpha(a: f32) -> Alpha {
 
 fn eta(e: f32) -> Eta {
     Eta::new(e).unwrap()
-}
-
-/// Serialises `value`, reads it back, asserts that the two are equal and returns the JSON.
-fn round_trip<T: Serialize + DeserializeOwned + PartialEq + Debug>(value: &T) -> String {
-    let json = serde_json::to_string(value).unwrap();
-    let back: T = serde_json::from_str(&json).unwrap_or_else(|e| panic!("{json}: {e}"));
-    assert_eq!(&back, value, "{json}");
-    json
-}
-
-/// Asserts that `value` serialises to exactly `json` and comes back equal.
-fn assert_wire<T: Serialize + DeserializeOwned + PartialEq + Debug>(value: &T, json: &str) {
-    assert_eq!(round_trip(value), json);
-}
-
-/// Asserts that `json` is refused with a message that starts with `message`.
-fn assert_refused<T: DeserializeOwned + Debug>(json: &str, message: &str) {
-    match serde_json::from_str::<T>(json) {
-        Ok(v) => panic!("{json} was accepted as {v:?}"),
-        Err(e) => assert!(e.to_string().starts_with(message), "{json}: {e}"),
-    }
 }
 
 /// The same reflectance on each carrier: one channel, RGB, four wavelengths.

@@ -3,38 +3,17 @@
 //! comes back equal; what comes in goes through the constructor, and a refusal names the field
 //! and its range.
 
+mod common;
+
+use common::wire::{assert_refused, assert_wire, round_trip};
 use lobe::bxdf::{BlinnPhongForm, TransportMode};
 use lobe::fresnel::{Conductor, Dielectric, NoFresnel, Schlick};
 use lobe::metals;
 use lobe::microfacet::{Beckmann, BeckmannMasking, BlinnPhongNdf, Ggx, Gtr, Masking};
 use lobe::{Alpha, ComplexIor, Eta, Vec3, Vec4};
-use serde::Serialize;
-use serde::de::DeserializeOwned;
-use std::fmt::Debug;
 
 fn alpha(a: f32) -> Alpha {
     Alpha::new(a).unwrap()
-}
-
-/// Serialises `value`, reads it back, asserts that the two are equal and returns the JSON.
-fn round_trip<T: Serialize + DeserializeOwned + PartialEq + Debug>(value: &T) -> String {
-    let json = serde_json::to_string(value).unwrap();
-    let back: T = serde_json::from_str(&json).unwrap_or_else(|e| panic!("{json}: {e}"));
-    assert_eq!(&back, value, "{json}");
-    json
-}
-
-/// Asserts that `value` serialises to exactly `json` and comes back equal.
-fn assert_wire<T: Serialize + DeserializeOwned + PartialEq + Debug>(value: &T, json: &str) {
-    assert_eq!(round_trip(value), json);
-}
-
-/// Asserts that `json` is refused with a message that starts with `message`.
-fn assert_refused<T: DeserializeOwned + Debug>(json: &str, message: &str) {
-    match serde_json::from_str::<T>(json) {
-        Ok(v) => panic!("{json} was accepted as {v:?}"),
-        Err(e) => assert!(e.to_string().starts_with(message), "{json}: {e}"),
-    }
 }
 
 #[test]
