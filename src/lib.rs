@@ -102,6 +102,7 @@ pub mod param;
 pub mod sampling;
 pub mod sh;
 pub mod spectrum;
+pub mod tables;
 #[cfg(feature = "verify")]
 pub mod verify;
 

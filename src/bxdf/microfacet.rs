@@ -194,6 +194,13 @@ impl<D: NormalDistribution, F: Fresnel> Microfacet<D, F> {
     pub fn masking(&self) -> Masking {
         self.masking
     }
+
+    /// The Fresnel term.
+    #[inline(always)]
+    #[must_use]
+    pub fn fresnel(&self) -> &F {
+        &self.fresnel
+    }
 }
 
 impl<D: NormalDistribution, F: Fresnel> Prepare for Microfacet<D, F> {

@@ -75,6 +75,20 @@ impl<D: NormalDistribution> RoughDielectric<D> {
         self.eta
     }
 
+    /// The distribution of microfacet normals.
+    #[inline(always)]
+    #[must_use]
+    pub fn distribution(&self) -> &D {
+        &self.distribution
+    }
+
+    /// The transport mode.
+    #[inline(always)]
+    #[must_use]
+    pub fn mode(&self) -> TransportMode {
+        self.mode
+    }
+
     /// The relative index `η'` seen by a transmission from `wo`'s side.
     #[inline(always)]
     fn etap(&self, wo: Vec3) -> f32 {
