@@ -48,7 +48,8 @@ const MARGIN: f32 = 1e-3;
 /// `F_ms` added to the coat's reflection — and its albedo `E(μ) = R(μ) + F_ms (1 − E₁(μ))`
 /// comes from the crate's baked tables (`R`: the coat's reflection, `E₁`: the `F = 1`
 /// albedo; [`crate::tables`]) without a margin, so the white furnace with `ρ = 1` is 1 to
-/// the tables' interpolation error (measured by `tests/energy_compensation.rs`).
+/// the tables' interpolation error: measured from 0.9996 to 1.0013 (GGX, `η` 1.33 to 2,
+/// `α` 0.05 to 1, `θo` up to 85°; `tests/energy_compensation.rs`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Plastic<D, S = f32, C = Microfacet<D, Dielectric>> {
     coat: C,
