@@ -78,9 +78,9 @@ pub enum Compensation {
 /// from 0.05 to 1, `θo` from 0° to 85° (standard errors at most 4.3e-4; the bar is
 /// `1 ± 0.005`), against 0.31–1.00 for single scattering; Turquin's scaling 0.9999–1.0003;
 /// positive, reciprocal (Kulla & Conty's lobe, to 2e-7), sampler and density agree
-/// (chi-square), `sample` equals `eval`/`pdf`. `eval` costs about 7 ns more (two table
-/// lookups): 1.19× the GGX gold conductor's, 1.9× the GGX Schlick one's (criterion,
-/// `benches/compensation.rs`).
+/// (chi-square), `sample` equals `eval`/`pdf`. `eval` costs 7–8 ns more (two table
+/// lookups): 1.18–1.20× the GGX gold conductor's, 1.7–1.9× the GGX Schlick one's
+/// (criterion, `benches/compensation.rs`).
 ///
 /// ```
 /// use lobe::bxdf::{Bxdf, Microfacet};
