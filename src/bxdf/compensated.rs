@@ -251,7 +251,11 @@ impl<D: NormalDistribution, F: FresnelAverage> Prepare for CompensatedMicrofacet
             Compensation::Turquin => {
                 // E below 1e-4 (only a table of your own has it) is held there, so that the
                 // factor stays finite.
-                let scale = if e > 0.0 { 1.0 / e.max(1e-4) - 1.0 } else { 0.0 };
+                let scale = if e > 0.0 {
+                    1.0 / e.max(1e-4) - 1.0
+                } else {
+                    0.0
+                };
                 (F::Spectrum::one() + self.factor * scale, 0.0)
             }
         };
