@@ -17,7 +17,11 @@
 //!   near grazing (a dip at 80°–85°), very rough ones most at normal incidence;
 //! * the rough dielectric (reflection plus transmission, importance transport, so `E` is the
 //!   fraction of the flux scattered) loses energy the same way; glazed and plastic (ρ = 1) stay
-//!   just at or below 1.
+//!   just at or below 1;
+//! * dashed, in the same colour: the same models with Kulla & Conty's energy compensation
+//!   ([`CompensatedMicrofacet`](lobe::bxdf::CompensatedMicrofacet),
+//!   [`CompensatedDielectric`](lobe::bxdf::CompensatedDielectric), the plastic's compensated
+//!   coat), which put back the light that scatters more than once and sit on `E = 1`.
 //!
 //! Each point is the mean of [`lobe::verify::albedo_sampled`] (the model's own sampler,
 //! 20 000 samples, the same random numbers at every θo); the shaded band is ±2 standard
@@ -37,6 +41,7 @@ use lobe::bxdf::{
 };
 use lobe::fresnel::NoFresnel;
 use lobe::microfacet::{Beckmann, Ggx, Masking};
+use lobe::tables::TabulatedAlbedo;
 use lobe::verify::{BxdfCheck, Estimate, albedo_sampled};
 use lobe::{Alpha, Eta, Roughness, Vec3};
 use plotters::coord::Shift;
@@ -83,6 +88,10 @@ struct Curve {
     label: String,
     model: Model,
     points: Vec<(f64, Estimate)>,
+    /// The index of its colour in [`COLOURS`].
+    colour: usize,
+    /// Dashed: an energy-compensated model, in the colour of the model it compensates.
+    dashed: bool,
 }
 
 /// One panel of the figure.
@@ -96,7 +105,41 @@ fn curve(label: impl Into<String>, model: impl Bxdf<Spectrum = f32> + 'static) -
         label: label.into(),
         model: Box::new(model),
         points: Vec::new(),
+        colour: 0,
+        dashed: false,
     }
+}
+
+/// Colours the curves of a panel in order, a compensated curve in the colour of the one
+/// before it.
+fn coloured(mut curves: Vec<Curve>) -> Vec<Curve> {
+    let mut next = 0;
+    for c in &mut curves {
+        if c.dashed {
+            c.colour = next.max(1) - 1;
+        } else {
+            c.colour = next;
+            next += 1;
+        }
+    }
+    curves
+}
+
+/// A compensated model's curve: dashed, in its uncompensated model's colour.
+fn compensated(label: impl Into<String>, model: impl Bxdf<Spectrum = f32> + 'static) -> Curve {
+    Curve {
+        dashed: true,
+        ..curve(label, model)
+    }
+}
+
+/// The single-scattering conductor with `F = 1` on `dist`, and its compensated curve.
+fn conductor_pair<D: TabulatedAlbedo + Copy + 'static>(a: f32, dist: D) -> Result<[Curve; 2]> {
+    let single = Microfacet::new(dist, Masking::HeightCorrelated, NoFresnel::<f32>::new());
+    Ok([
+        curve(format!("α = {a}"), single),
+        compensated("  compensated", single.with_energy_compensation()?),
+    ])
 }
 
 fn alpha(a: f32) -> Result<Alpha> {
@@ -152,37 +195,31 @@ fn panels() -> Result<Vec<Panel>> {
     let mut ggx = Vec::new();
     let mut beckmann = Vec::new();
     for a in roughnesses {
-        ggx.push(curve(
-            format!("α = {a}"),
-            Microfacet::new(
-                Ggx::isotropic(alpha(a)?),
-                Masking::HeightCorrelated,
-                NoFresnel::<f32>::new(),
-            ),
-        ));
-        beckmann.push(curve(
-            format!("α = {a}"),
-            Microfacet::new(
-                Beckmann::isotropic(alpha(a)?),
-                Masking::HeightCorrelated,
-                NoFresnel::<f32>::new(),
-            ),
-        ));
+        ggx.extend(conductor_pair(a, Ggx::isotropic(alpha(a)?))?);
+        beckmann.extend(conductor_pair(a, Beckmann::isotropic(alpha(a)?))?);
     }
 
     let mut coated = Vec::new();
-    for a in roughnesses {
-        coated.push(curve(
-            format!("dielectric α = {a}"),
-            RoughDielectric::new(Ggx::isotropic(alpha(a)?), glass)
-                .with_mode(TransportMode::Importance),
+    for a in [0.1_f32, 0.5, 1.0] {
+        let single = RoughDielectric::new(Ggx::isotropic(alpha(a)?), glass)
+            .with_mode(TransportMode::Importance);
+        coated.push(curve(format!("dielectric α = {a}"), single));
+        coated.push(compensated(
+            "  compensated",
+            single.with_energy_compensation()?,
         ));
     }
     coated.push(curve("glazed ρ = 1", Glazed::new(1.0_f32, glass)?));
     coated.push(curve(
-        "plastic ρ = 1, α = 0.3",
-        Plastic::new(1.0_f32, Ggx::isotropic(alpha(0.3)?), glass)?,
+        "plastic ρ = 1, α = 0.6",
+        Plastic::new(1.0_f32, Ggx::isotropic(alpha(0.6)?), glass)?,
     ));
+    coated.push(compensated(
+        "  compensated coat",
+        Plastic::compensated(1.0_f32, Ggx::isotropic(alpha(0.6)?), glass)?,
+    ));
+    let (ggx, beckmann, coated) = (coloured(ggx), coloured(beckmann), coloured(coated));
+    let (diffuse, phong, modified) = (coloured(diffuse), coloured(phong), coloured(modified));
 
     Ok(vec![
         Panel {
@@ -198,15 +235,15 @@ fn panels() -> Result<Vec<Panel>> {
             curves: modified,
         },
         Panel {
-            title: "GGX conductor, F = 1",
+            title: "GGX conductor, F = 1 (dashed: compensated)",
             curves: ggx,
         },
         Panel {
-            title: "Beckmann conductor, F = 1",
+            title: "Beckmann conductor, F = 1 (dashed: compensated)",
             curves: beckmann,
         },
         Panel {
-            title: "Rough dielectric η = 1.5 (R + T), glazed, plastic",
+            title: "Rough glass η = 1.5 (R + T), glazed, plastic",
             curves: coated,
         },
     ])
@@ -278,7 +315,8 @@ where
         6,
         BLACK.stroke_width(2),
     ))?;
-    for (c, colour) in panel.curves.iter().zip(COLOURS.iter().cycle()) {
+    for c in &panel.curves {
+        let colour = &COLOURS[c.colour % COLOURS.len()];
         let band: Vec<(f64, f64)> = c
             .points
             .iter()
@@ -291,19 +329,31 @@ where
             )
             .collect();
         chart.draw_series(std::iter::once(Polygon::new(band, colour.mix(0.25))))?;
-        chart.draw_series(LineSeries::new(
-            c.points.iter().map(|(t, e)| (*t, e.mean)),
-            colour.stroke_width(2),
-        ))?;
+        let line = c.points.iter().map(|(t, e)| (*t, e.mean));
+        if c.dashed {
+            chart.draw_series(DashedLineSeries::new(line, 7, 4, colour.stroke_width(2)))?;
+        } else {
+            chart.draw_series(LineSeries::new(line, colour.stroke_width(2)))?;
+        }
     }
 
     // The legend, beside the plot.
     let mut y = 60;
-    for (c, colour) in panel.curves.iter().zip(COLOURS.iter().cycle()) {
-        legend.draw(&PathElement::new(
-            vec![(4, y), (30, y)],
-            colour.stroke_width(3),
-        ))?;
+    for c in &panel.curves {
+        let colour = &COLOURS[c.colour % COLOURS.len()];
+        if c.dashed {
+            for x in [4, 14, 24] {
+                legend.draw(&PathElement::new(
+                    vec![(x, y), (x + 6, y)],
+                    colour.stroke_width(3),
+                ))?;
+            }
+        } else {
+            legend.draw(&PathElement::new(
+                vec![(4, y), (30, y)],
+                colour.stroke_width(3),
+            ))?;
+        }
         legend.draw(&Text::new(
             c.label.clone(),
             (36, y),
@@ -339,7 +389,8 @@ where
     header.draw(&Text::new(
         format!(
             "mean of lobe::verify::albedo_sampled, {SAMPLES} samples per point; \
-             shaded: ±2 standard errors; dashed: E = 1 (energy conserved, nothing lost)"
+             shaded: ±2 standard errors; dashed black: E = 1 (energy conserved, nothing lost); \
+             dashed colour: energy-compensated"
         ),
         (centre, 42),
         text_style(15.0, RGBColor(80, 80, 80)).pos(Pos::new(HPos::Center, VPos::Top)),

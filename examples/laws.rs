@@ -13,9 +13,9 @@
 //! the model, documented in its docs, not a failure of the crate.
 
 use lobe::bxdf::{
-    BlinnPhong, BlinnPhongForm, Bxdf, DisneyDiffuse, EnergyPreservingOrenNayar, Glazed, Lambert,
-    Microfacet, Mirror, OrenNayar, Phong, Plastic, RoughDielectric, SmoothDielectric,
-    ThinDielectric, TransportMode,
+    BlinnPhong, BlinnPhongForm, Bxdf, CompensatedMicrofacet, Compensation, DisneyDiffuse,
+    EnergyPreservingOrenNayar, Glazed, Lambert, Microfacet, Mirror, OrenNayar, Phong, Plastic,
+    RoughDielectric, SmoothDielectric, ThinDielectric, TransportMode,
 };
 use lobe::fresnel::{Conductor, NoFresnel, Schlick};
 use lobe::microfacet::{
@@ -75,12 +75,33 @@ fn models() -> Result<Vec<Entry>, ParamError> {
             Microfacet::new(Ggx::isotropic(a(0.3)?), Masking::HeightCorrelated, gold_r),
         ),
         entry(
+            "GGX gold (red) α=0.3, compensated",
+            Microfacet::new(Ggx::isotropic(a(0.3)?), Masking::HeightCorrelated, gold_r)
+                .with_energy_compensation()?,
+        ),
+        entry(
+            "GGX gold (red) α=0.7, Turquin's scaling (not reciprocal)",
+            CompensatedMicrofacet::new(
+                Microfacet::new(Ggx::isotropic(a(0.7)?), Masking::HeightCorrelated, gold_r),
+                Compensation::Turquin,
+            )?,
+        ),
+        entry(
             "GGX F=1 α=0.3",
             Microfacet::new(
                 Ggx::isotropic(a(0.3)?),
                 Masking::HeightCorrelated,
                 NoFresnel::<f32>::new(),
             ),
+        ),
+        entry(
+            "GGX F=1 α=1, compensated",
+            Microfacet::new(
+                Ggx::isotropic(a(1.0)?),
+                Masking::HeightCorrelated,
+                NoFresnel::<f32>::new(),
+            )
+            .with_energy_compensation()?,
         ),
         entry(
             "GGX anisotropic α=(0.1, 0.4)",
@@ -91,12 +112,30 @@ fn models() -> Result<Vec<Entry>, ParamError> {
             ),
         ),
         entry(
+            "GGX anisotropic α=(0.1, 0.4), compensated",
+            Microfacet::new(
+                Ggx::new(a(0.1)?, a(0.4)?),
+                Masking::HeightCorrelated,
+                gold_r,
+            )
+            .with_energy_compensation()?,
+        ),
+        entry(
             "Beckmann copper (red) α=0.4",
             Microfacet::new(
                 Beckmann::isotropic(a(0.4)?),
                 Masking::HeightCorrelated,
                 copper_r,
             ),
+        ),
+        entry(
+            "Beckmann copper (red) α=0.4, compensated",
+            Microfacet::new(
+                Beckmann::isotropic(a(0.4)?),
+                Masking::HeightCorrelated,
+                copper_r,
+            )
+            .with_energy_compensation()?,
         ),
         entry(
             "Cook-Torrance: Beckmann + V-cavity α=0.3",
@@ -135,6 +174,22 @@ fn models() -> Result<Vec<Entry>, ParamError> {
             ),
             1.0 / 1.5,
         ),
+        (
+            "Rough glass GGX α=0.3 (radiance), compensated".into(),
+            Box::new(
+                RoughDielectric::new(Ggx::isotropic(a(0.3)?), glass).with_energy_compensation()?,
+            ),
+            1.5,
+        ),
+        (
+            "Rough glass GGX α=0.7 (importance), compensated".into(),
+            Box::new(
+                RoughDielectric::new(Ggx::isotropic(a(0.7)?), glass)
+                    .with_mode(TransportMode::Importance)
+                    .with_energy_compensation()?,
+            ),
+            1.0 / 1.5,
+        ),
         entry("Mirror (F=1)", Mirror::new(NoFresnel::<f32>::new())),
         (
             "Smooth glass (importance)".into(),
@@ -146,6 +201,10 @@ fn models() -> Result<Vec<Entry>, ParamError> {
         entry(
             "Plastic GGX α=0.3 ρ=0.8",
             Plastic::new(0.8, Ggx::isotropic(a(0.3)?), glass)?,
+        ),
+        entry(
+            "Plastic GGX α=0.3 ρ=1, compensated coat",
+            Plastic::compensated(1.0, Ggx::isotropic(a(0.3)?), glass)?,
         ),
     ])
 }

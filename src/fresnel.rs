@@ -19,6 +19,10 @@
 //! outside, the sign of the refracted cosine, total internal reflection), so the crate can be
 //! checked against it record by record (`tests/fresnel.rs`).
 
+mod average;
+
+pub use average::{FresnelAverage, cosine_weighted_average};
+
 use crate::math::{copysign, pow5, sqrt};
 use crate::param::{ComplexIor, Eta};
 use crate::spectrum::Spectrum;

@@ -112,6 +112,7 @@ pub mod sampling;
 pub mod serde_impls;
 pub mod sh;
 pub mod spectrum;
+pub mod tables;
 #[cfg(feature = "verify")]
 pub mod verify;
 

@@ -307,8 +307,8 @@ pub(crate) fn erf_inv_approx(x: f32) -> f32 {
 
 /// Gauss-Legendre nodes (the positive half) and weights on `[−1, 1]`, 8 points
 /// (Abramowitz & Stegun, table 25.4).
-const GL8_NODES: [f32; 4] = [0.183_434_64, 0.525_532_4, 0.796_666_5, 0.960_289_85];
-const GL8_WEIGHTS: [f32; 4] = [0.362_683_78, 0.313_706_65, 0.222_381_03, 0.101_228_54];
+pub(crate) const GL8_NODES: [f32; 4] = [0.183_434_64, 0.525_532_4, 0.796_666_5, 0.960_289_85];
+pub(crate) const GL8_WEIGHTS: [f32; 4] = [0.362_683_78, 0.313_706_65, 0.222_381_03, 0.101_228_54];
 
 /// 8-point Gauss-Legendre quadrature of `f` over `[a, b]`: exact for polynomials of degree 15.
 /// For the one-time tables models build at construction.
@@ -319,19 +319,6 @@ pub(crate) fn gauss_legendre(a: f32, b: f32, f: impl Fn(f32) -> f32) -> f32 {
         sum += w * (f(mid - half * x) + f(mid + half * x));
     }
     sum * half
-}
-
-/// The cosine-weighted average of `g` over the hemisphere, `2 ∫₀¹ g(μ) μ dμ` (`μ = cos θ`),
-/// by 8-point Gauss-Legendre on 16 panels: the average of a directional albedo `E(μ)` over
-/// uniformly incident light (`Ē`), for the tables models build at construction.
-pub(crate) fn cosine_weighted_average(g: impl Fn(f32) -> f32) -> f32 {
-    const PANELS: usize = 16;
-    (0..PANELS)
-        .map(|p| {
-            let (a, b) = (p as f32 / PANELS as f32, (p + 1) as f32 / PANELS as f32);
-            2.0 * gauss_legendre(a, b, |mu| g(mu) * mu)
-        })
-        .sum()
 }
 
 #[cfg(test)]

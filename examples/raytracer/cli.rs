@@ -95,7 +95,9 @@ OPTIONS:
     --scene NAME       default: one sphere per model on a floor, area light and sky;
                        furnace: lossless white spheres in a uniform environment (they
                        should vanish); lights: an OBJ mesh under point, directional and
-                       spherical lights
+                       spherical lights; ggx-row, ggx-row-compensated: GGX spheres
+                       α = 0.1 … 1 (F = 1 above, gold below) in a uniform environment,
+                       single scattering or energy-compensated
     --env NAME         sky: the scene's own environment (default); sh: its projection onto
                        order-3 spherical harmonics (9 coefficients per channel), which then
                        lights the scene and shows as the background

@@ -55,6 +55,7 @@
 //! **Lengths.** Every slice of a call must have the same length; otherwise the call writes
 //! nothing and returns [`LengthError`]. It never panics.
 
+mod compensated;
 mod kernel;
 mod lanes;
 mod models;

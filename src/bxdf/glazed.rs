@@ -44,7 +44,7 @@ impl<S: Spectrum> Glazed<S> {
     /// [`ParamError`] naming `reflectance` for a channel that is NaN or outside `[0, 1]`.
     pub fn new(reflectance: S, eta: Eta) -> Result<Self, ParamError> {
         let reflectance = unit_interval("reflectance", reflectance)?;
-        let f_avg = crate::math::cosine_weighted_average(|mu| dielectric(mu, eta));
+        let f_avg = crate::fresnel::cosine_weighted_average(|mu| dielectric(mu, eta));
         // A coat that reflects everything (η far below 1: total internal reflection at almost
         // every angle) lets no light reach the base: no diffuse term, rather than 0 · ∞.
         let diffuse_scale = if f_avg < 1.0 {

@@ -199,7 +199,7 @@ impl<D: NormalDistribution, F: Fresnel> Microfacet<D, F> {
     }
 
     /// The Fresnel term.
-    #[inline]
+    #[inline(always)]
     #[must_use]
     pub fn fresnel(&self) -> &F {
         &self.fresnel

@@ -111,6 +111,8 @@ macro_rules! delta_model {
 }
 
 mod blinn_phong;
+mod compensated;
+mod compensated_dielectric;
 mod diffuse_glossy;
 mod disney_diffuse;
 mod eon;
@@ -127,6 +129,8 @@ mod smooth_dielectric;
 mod thin_dielectric;
 
 pub use blinn_phong::{BlinnPhong, BlinnPhongForm};
+pub use compensated::{CompensatedMicrofacet, CompensatedState, Compensation};
+pub use compensated_dielectric::CompensatedDielectric;
 pub use disney_diffuse::DisneyDiffuse;
 pub use eon::EnergyPreservingOrenNayar;
 pub use glazed::Glazed;
@@ -136,7 +140,7 @@ pub use mirror::Mirror;
 pub use mono::Mono;
 pub use oren_nayar::OrenNayar;
 pub use phong::Phong;
-pub use plastic::{Plastic, PlasticState};
+pub use plastic::{CompensatedPlastic, Plastic, PlasticState};
 pub use rough_dielectric::RoughDielectric;
 pub use smooth_dielectric::SmoothDielectric;
 pub use thin_dielectric::ThinDielectric;

@@ -75,6 +75,20 @@ impl<D: NormalDistribution> RoughDielectric<D> {
         self.eta
     }
 
+    /// The distribution of microfacet normals.
+    #[inline(always)]
+    #[must_use]
+    pub fn distribution(&self) -> &D {
+        &self.distribution
+    }
+
+    /// The transport mode.
+    #[inline(always)]
+    #[must_use]
+    pub fn mode(&self) -> TransportMode {
+        self.mode
+    }
+
     /// The relative index `η'` seen by a transmission from `wo`'s side.
     #[inline(always)]
     fn etap(&self, wo: Vec3) -> f32 {
@@ -275,20 +289,6 @@ impl<D: NormalDistribution> RoughDielectric<D> {
     #[must_use]
     pub fn masking(&self) -> Masking {
         self.masking
-    }
-
-    /// The distribution of microfacet normals.
-    #[inline]
-    #[must_use]
-    pub fn distribution(&self) -> &D {
-        &self.distribution
-    }
-
-    /// Whether the model transports radiance or importance ([`with_mode`](Self::with_mode)).
-    #[inline]
-    #[must_use]
-    pub fn mode(&self) -> TransportMode {
-        self.mode
     }
 }
 

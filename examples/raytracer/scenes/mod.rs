@@ -1,6 +1,7 @@
 //! The scenes the renderer knows, by name.
 
 pub mod furnace;
+pub mod ggx_row;
 pub mod lights;
 pub mod showcase;
 
@@ -19,11 +20,14 @@ pub enum SceneChoice {
     Furnace,
     /// A mesh (OBJ) and spheres under a point, a directional and a spherical light.
     Lights,
+    /// GGX spheres α = 0.1 … 1 (`F = 1` and gold) in a uniform environment, single
+    /// scattering (`false`) or energy-compensated (`true`).
+    GgxRow(bool),
 }
 
 impl SceneChoice {
     /// The names accepted by `--scene`.
-    pub const NAMES: &'static str = "default, furnace, lights";
+    pub const NAMES: &'static str = "default, furnace, lights, ggx-row, ggx-row-compensated";
 
     /// The scene called `name`, if there is one.
     pub fn from_name(name: &str) -> Option<Self> {
@@ -31,6 +35,8 @@ impl SceneChoice {
             "default" | "showcase" => Some(Self::Default),
             "furnace" => Some(Self::Furnace),
             "lights" => Some(Self::Lights),
+            "ggx-row" => Some(Self::GgxRow(false)),
+            "ggx-row-compensated" => Some(Self::GgxRow(true)),
             _ => None,
         }
     }
@@ -48,6 +54,9 @@ impl SceneChoice {
                 .map_err(param),
             Self::Furnace => furnace::build(aspect).map(|s| (s, None)).map_err(param),
             Self::Lights => lights::build(aspect).map(|s| (s, None)),
+            Self::GgxRow(compensated) => ggx_row::build(aspect, compensated)
+                .map(|s| (s, None))
+                .map_err(param),
         }
     }
 }

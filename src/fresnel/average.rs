@@ -1,0 +1,95 @@
+//! The hemispherical average of a Fresnel term, which energy compensation needs.
+
+use super::{Conductor, Dielectric, Fresnel, NoFresnel, Schlick, dielectric};
+use crate::spectrum::Spectrum;
+
+use crate::math::{GL8_NODES as NODES, GL8_WEIGHTS as WEIGHTS};
+/// Panels of the composite rule over `μ ∈ [0, 1]` (8 nodes each).
+const PANELS: usize = 8;
+
+/// `2 ∫₀¹ F(μ) μ dμ` by the composite 8-point Gauss–Legendre rule on 8 panels:
+/// 64 evaluations of `F`, exact for a polynomial of degree 15 on each panel. Measured against
+/// a 2¹⁶-interval midpoint rule in `f64` (`tests/energy_compensation.rs`, which asserts
+/// 1e-6): Schlick's term within 1.0e-7, the exact conductor's within 2.9e-8, the
+/// dielectric's ([`FresnelAverage`], `η` from 1/2.4 to 2.4) within 1.6e-7. Also the average of
+/// a directional albedo `E(μ)` over uniformly incident light (`Ē`), for the tables models
+/// build at construction ([`Glazed`](crate::bxdf::Glazed), [`Plastic`](crate::bxdf::Plastic)).
+#[must_use]
+pub fn cosine_weighted_average<S: Spectrum>(f: impl Fn(f32) -> S) -> S {
+    let half = 0.5 / PANELS as f32;
+    let mut sum = S::zero();
+    for p in 0..PANELS {
+        let mid = (2 * p + 1) as f32 * half;
+        for (x, w) in NODES.iter().zip(WEIGHTS) {
+            for mu in [mid - half * x, mid + half * x] {
+                sum += f(mu) * (w * half * mu);
+            }
+        }
+    }
+    sum * 2.0
+}
+
+/// A Fresnel term whose hemispherical average is known:
+///
+/// ```text
+/// F_avg = 2 ∫₀¹ F(μ) μ dμ
+/// ```
+///
+/// the cosine-weighted mean reflectance over incident directions, from which Kulla & Conty
+/// (2017, "Revisiting Physically Based Shading at Imageworks") build the colour of the multiply scattered light,
+/// `F_ms = F_avg² E_avg / (1 − F_avg (1 − E_avg))` (see
+/// [`CompensatedMicrofacet`](crate::bxdf::CompensatedMicrofacet)).
+///
+/// Implemented for [`Schlick`] (closed form), [`Conductor`] and [`Dielectric`]
+/// (quadrature, [`cosine_weighted_average`]) and [`NoFresnel`] (1).
+pub trait FresnelAverage: Fresnel {
+    /// `F_avg = 2 ∫₀¹ F(μ) μ dμ`, per channel, in `[0, 1]`.
+    #[must_use]
+    fn average(&self) -> Self::Spectrum;
+}
+
+impl<S: Spectrum> FresnelAverage for Schlick<S> {
+    /// `F0 + (1 − F0) · 2 ∫₀¹ (1 − μ)⁵ μ dμ = F0 + (1 − F0)/21`, since
+    /// `∫₀¹ (1 − μ)⁵ μ dμ = B(2, 6) = 1/42`.
+    #[inline]
+    fn average(&self) -> S {
+        let f0 = self.eval(1.0);
+        f0 + (S::one() - f0) * (1.0 / 21.0)
+    }
+}
+
+impl<S: Spectrum> FresnelAverage for Conductor<S> {
+    /// By quadrature of the exact conductor term ([`cosine_weighted_average`]).
+    #[inline]
+    fn average(&self) -> S {
+        cosine_weighted_average(|mu| self.eval(mu)).map(|x| x.clamp(0.0, 1.0))
+    }
+}
+
+impl FresnelAverage for Dielectric {
+    /// By quadrature from the less dense side, where the term is smooth; from the denser side
+    /// (`η < 1` seen from the outside) through the reciprocity of the smooth interface,
+    /// `1 − F_avg(1/n) = (1 − F_avg(n)) / n²` for `n > 1`, which skips the kink at the
+    /// critical angle. (The identity: the smooth interface's transmission is reciprocal in
+    /// the generalised form `T(wo → wi)/η_o² = T(wi → wo)/η_i²` (Veach 1997, §5.2), and
+    /// Snell's map `n² μt dμt = μi dμi` carries one side's cosine-weighted hemisphere onto the
+    /// part of the other's that escapes total internal reflection.)
+    #[inline]
+    fn average(&self) -> f32 {
+        let n = self.eta.get();
+        if n >= 1.0 {
+            cosine_weighted_average(|mu| dielectric(mu, self.eta)).clamp(0.0, 1.0)
+        } else {
+            let outer = cosine_weighted_average(|mu| dielectric(mu, self.eta.inv()));
+            (1.0 - n * n * (1.0 - outer)).clamp(0.0, 1.0)
+        }
+    }
+}
+
+impl<S: Spectrum> FresnelAverage for NoFresnel<S> {
+    /// `1`.
+    #[inline]
+    fn average(&self) -> S {
+        S::one()
+    }
+}

@@ -1,0 +1,1119 @@
+//! Energy compensation (issue 11): the white furnace of the compensated conductors, rough
+//! dielectrics and plastic, the law suite on the compensated models, the baked tables
+//! re-baked and their interpolation error measured against fresh integration, the Fresnel
+//! averages, and fault checks showing the furnace test catches a broken table.
+//!
+//! `cargo test --test energy_compensation -- --nocapture` prints every figure, with the
+//! uncompensated model's beside the compensated one's.
+
+use lobe::bxdf::{
+    Bxdf, CompensatedMicrofacet, Compensation, Microfacet, Plastic, RoughDielectric, TransportMode,
+};
+use lobe::fresnel::{
+    Conductor, Dielectric, FresnelAverage, NoFresnel, Schlick, cosine_weighted_average, dielectric,
+};
+use lobe::microfacet::{Beckmann, BeckmannMasking, Ggx, Masking};
+use lobe::tables::bake::{self, Family};
+use lobe::tables::{
+    ALPHA_NODES, AlbedoRow, BECKMANN_E, BECKMANN_E_AVG, ConductorTable, DIELECTRIC_ALPHA_NODES,
+    DIELECTRIC_MU_NODES, ETA_NODES, GGX_DIELECTRIC_INSIDE, GGX_DIELECTRIC_OUTSIDE,
+    GGX_DIELECTRIC_REFLECTION, GGX_E, GGX_E_AVG, MU_NODES, TabulatedAlbedo, TabulatedDielectric,
+    alpha_node, eta_node,
+};
+use lobe::verify::{
+    Accumulator, BxdfCheck, Config, Estimate, Pcg32, albedo_sampled, check_bxdf, sidak,
+    two_sided_quantile,
+};
+use lobe::{Alpha, ComplexIor, Eta, Vec2, Vec3};
+
+fn a(x: f32) -> Alpha {
+    Alpha::new(x).unwrap()
+}
+
+fn eta(x: f32) -> Eta {
+    Eta::new(x).unwrap()
+}
+
+/// The Šidák-corrected two-sided `k` for `n` estimates at a family-wide 1%.
+fn k_sigma(n: usize) -> f64 {
+    two_sided_quantile(sidak(0.01, n))
+}
+
+/// The unit direction at `θ` degrees from the normal (negative `cos θ` below the surface).
+fn dir(theta_deg: f32) -> Vec3 {
+    let (s, c) = theta_deg.to_radians().sin_cos();
+    Vec3::new(s * 0.7f32.cos(), s * 0.7f32.sin(), c)
+}
+
+/// `E ± σ` as the tables print it.
+fn show(e: &Estimate) -> String {
+    format!("{:.4} ± {:.1e}", e.mean, e.std_err)
+}
+
+/// A white-furnace measurement: the directional albedo at one direction.
+struct Furnace {
+    label: String,
+    /// The compensated model's albedo: the single-scattering lobe by its own sampler plus
+    /// the rest by quadrature ([`split_albedo`]), or the whole by the model's sampler.
+    compensated: Estimate,
+    /// The compensated model's albedo by its own (mixture) sampler, when measured too.
+    sampled: Option<Estimate>,
+    /// The single-scattering model's albedo.
+    single: f64,
+}
+
+/// `∫ (f(wo, wi) − f_ss(wo, wi)) |cos θi| dωi`, the part of the compensated model that is
+/// not the single-scattering lobe (the compensation lobes, a plastic's diffuse base): smooth
+/// in `wi`, integrated by product Gauss–Legendre in `(√|μi|, φi)` — 64 panels of 4 points in
+/// `√μ`, aligned with the tables' nodes, times 16 azimuths — over the upper hemisphere, and
+/// the lower one too when `both` is set.
+fn remainder(
+    model: &dyn Bxdf<Spectrum = f32>,
+    single: &dyn Bxdf<Spectrum = f32>,
+    wo: Vec3,
+    both: bool,
+) -> f64 {
+    const GL4: [(f64, f64); 4] = [
+        (-0.861_136_311_594_052_6, 0.347_854_845_137_453_9),
+        (-0.339_981_043_584_856_3, 0.652_145_154_862_546_1),
+        (0.339_981_043_584_856_3, 0.652_145_154_862_546_1),
+        (0.861_136_311_594_052_6, 0.347_854_845_137_453_9),
+    ];
+    let (panels, azimuths) = (64, 16);
+    let mut sum = 0.0;
+    for side in if both {
+        &[1.0f64, -1.0][..]
+    } else {
+        &[1.0][..]
+    } {
+        for p in 0..panels {
+            for (t, w) in GL4 {
+                let x = (p as f64 + 0.5 + 0.5 * t) / panels as f64;
+                let mu = x * x;
+                let sin = (1.0 - mu * mu).max(0.0).sqrt();
+                for k in 0..azimuths {
+                    let phi = std::f64::consts::TAU * (k as f64 + 0.5) / azimuths as f64;
+                    let wi = Vec3::new(
+                        (sin * phi.cos()) as f32,
+                        (sin * phi.sin()) as f32,
+                        (side * mu) as f32,
+                    );
+                    let f = f64::from(model.eval(wo, wi)) - f64::from(single.eval(wo, wi));
+                    // dω = dμ dφ = 2x dx dφ; the cosine μ = x².
+                    sum += f
+                        * mu
+                        * 2.0
+                        * x
+                        * (0.5 * w / panels as f64)
+                        * (std::f64::consts::TAU / azimuths as f64);
+                }
+            }
+        }
+    }
+    sum
+}
+
+/// The directional albedo by `model`'s own sampler with jittered-stratified `u` (32 × 32
+/// strata) and an independent `uc`, 64 independent times: the mean of the 64 replicate
+/// means, with the standard error of their spread (randomised quasi-Monte Carlo: unbiased,
+/// and far less noisy than independent samples for the smooth single-scattering weights).
+fn stratified_albedo(model: &dyn Bxdf<Spectrum = f32>, wo: Vec3, seed: u64) -> Estimate {
+    const SIDE: usize = 32;
+    const REPLICATES: usize = 64;
+    let below_one = |x: f32| x.min(1.0 - f32::EPSILON / 2.0);
+    let mut rng = Pcg32::new(seed, 41);
+    let mut acc = Accumulator::new();
+    for _ in 0..REPLICATES {
+        let mut sum = 0.0;
+        for i in 0..SIDE {
+            for j in 0..SIDE {
+                let u = Vec2::new(
+                    below_one((i as f32 + rng.next_f32()) / SIDE as f32),
+                    below_one((j as f32 + rng.next_f32()) / SIDE as f32),
+                );
+                let uc = rng.next_f32();
+                sum += model
+                    .sample(wo, u, uc)
+                    .map_or(0.0, |s| f64::from(s.weight()));
+            }
+        }
+        acc.push(sum / (SIDE * SIDE) as f64);
+    }
+    acc.finish()
+}
+
+/// The compensated model's albedo as the single-scattering lobe's, by its own sampler
+/// ([`stratified_albedo`], which carries the standard error), plus the [`remainder`] by
+/// quadrature; and the single-scattering albedo alone.
+fn split_albedo(
+    model: &dyn Bxdf<Spectrum = f32>,
+    single: &dyn Bxdf<Spectrum = f32>,
+    wo: Vec3,
+) -> (Estimate, f64) {
+    let ss = stratified_albedo(single, wo, 7);
+    let rest = remainder(model, single, wo, model.lobes().is_transmissive());
+    (
+        Estimate {
+            mean: ss.mean + rest,
+            ..ss
+        },
+        ss.mean,
+    )
+}
+
+/// Asserts that every measurement lies inside `1 ± bar` with its `k`-sigma interval, and
+/// that the model's own sampler agrees with the split measurement where both were taken,
+/// printing them all; returns how many lie outside (for the fault checks) without asserting
+/// when `assert` is false.
+fn judge(title: &str, rows: &[Furnace], bar: f64, assert: bool) -> usize {
+    let k = k_sigma(rows.len());
+    eprintln!(
+        "\n{title}: bar 1 ± {bar}, k = {k:.2} over {} points",
+        rows.len()
+    );
+    eprintln!("  where | compensated | by its own sampler | single scattering");
+    let mut outside = 0;
+    let mut worst = (0.0_f64, String::new());
+    let mut worst_gap = 0.0_f64;
+    for r in rows {
+        let e = &r.compensated;
+        let reach = (e.mean - 1.0).abs() + k * e.std_err;
+        if reach > worst.0 {
+            worst = (reach, r.label.clone());
+        }
+        let ok = reach <= bar;
+        outside += usize::from(!ok);
+        let sampled = r.sampled.map_or(String::from("—"), |s| {
+            let sigma = (s.std_err.powi(2) + e.std_err.powi(2)).sqrt();
+            let gap = (s.mean - e.mean).abs() / sigma;
+            // Beyond the round-off of f32 weights (a few ulps) where both are all but exact.
+            worst_gap = worst_gap.max(((s.mean - e.mean).abs() - 1e-6).max(0.0) / sigma);
+            if assert {
+                assert!(
+                    gap <= k || (s.mean - e.mean).abs() <= 1e-6,
+                    "{title}, {}: sampled {s} vs {e}",
+                    r.label
+                );
+            }
+            show(&s)
+        });
+        eprintln!(
+            "  {} | {} | {sampled} | {:.4}{}",
+            r.label,
+            show(e),
+            r.single,
+            if ok { "" } else { "   ✗" }
+        );
+    }
+    eprintln!(
+        "  largest |E − 1| + kσ = {:.2e} at {}; {outside} outside; own sampler within {worst_gap:.2}σ",
+        worst.0, worst.1
+    );
+    if assert {
+        assert_eq!(outside, 0, "{title}: {outside} points outside 1 ± {bar}");
+    }
+    outside
+}
+
+const CONDUCTOR_ALPHAS: [f32; 7] = [0.05, 0.1, 0.2, 0.35, 0.5, 0.75, 1.0];
+const CONDUCTOR_THETAS: [f32; 7] = [0.0, 20.0, 40.0, 60.0, 70.0, 80.0, 85.0];
+
+/// The furnace of `F = 1` conductors on `dist` over `alphas` × `thetas`, compensated.
+fn conductor_furnace<D: TabulatedAlbedo + Copy>(
+    dist: impl Fn(Alpha) -> D,
+    alphas: &[f32],
+    thetas: &[f32],
+    sampled: usize,
+) -> Vec<Furnace> {
+    let mut rows = Vec::new();
+    for &alpha in alphas {
+        let single = Microfacet::new(
+            dist(a(alpha)),
+            Masking::HeightCorrelated,
+            NoFresnel::<f32>::new(),
+        );
+        let compensated = single.with_energy_compensation().unwrap();
+        for &theta in thetas {
+            let wo = dir(theta);
+            let (e, ss) = split_albedo(&compensated, &single, wo);
+            rows.push(Furnace {
+                label: format!("α = {alpha:<4} θo = {theta:>2}°"),
+                compensated: e,
+                sampled: (sampled > 0).then(|| {
+                    albedo_sampled(
+                        &compensated,
+                        wo,
+                        &BxdfCheck {
+                            samples: sampled,
+                            seed: 29,
+                        },
+                    )
+                }),
+                single: ss,
+            });
+        }
+    }
+    rows
+}
+
+/// Bar: compensated GGX and Beckmann conductors with `F = 1` have directional albedo
+/// `1 ± 0.005` for `α ∈ [0.05, 1]` and `θo ∈ [0°, 85°]`.
+#[test]
+fn conductors_pass_the_white_furnace() {
+    let ggx = conductor_furnace(Ggx::isotropic, &CONDUCTOR_ALPHAS, &CONDUCTOR_THETAS, 50_000);
+    judge("GGX conductor, F = 1", &ggx, 0.005, true);
+    let beckmann = conductor_furnace(
+        Beckmann::isotropic,
+        &CONDUCTOR_ALPHAS,
+        &CONDUCTOR_THETAS,
+        20_000,
+    );
+    judge("Beckmann conductor, F = 1", &beckmann, 0.005, true);
+}
+
+/// Turquin's scaling conserves the `F = 1` energy too (its weakness is reciprocity):
+/// measured whole with its own sampler (the single-scattering one, its weights scaled).
+#[test]
+fn turquin_scaling_passes_the_white_furnace() {
+    let mut rows = Vec::new();
+    for alpha in [0.05f32, 0.3, 1.0] {
+        let single = Microfacet::new(
+            Ggx::isotropic(a(alpha)),
+            Masking::HeightCorrelated,
+            NoFresnel::<f32>::new(),
+        );
+        let t = CompensatedMicrofacet::new(single, Compensation::Turquin).unwrap();
+        for theta in [0.0f32, 45.0, 85.0] {
+            rows.push(Furnace {
+                label: format!("α = {alpha:<4} θo = {theta:>2}°"),
+                compensated: stratified_albedo(&t, dir(theta), 31),
+                sampled: None,
+                single: stratified_albedo(&single, dir(theta), 31).mean,
+            });
+        }
+    }
+    judge(
+        "GGX conductor, F = 1, Turquin's scaling",
+        &rows,
+        0.005,
+        true,
+    );
+}
+
+/// Beckmann with Walter's rational `G1` reads the exact-`Λ` tables, within the bar. An
+/// anisotropic distribution is compensated at its RMS width: the furnace measures what that
+/// costs, a documented limitation (an isotropic table cannot follow the azimuth).
+#[test]
+fn rational_masking_and_anisotropy_are_measured() {
+    let mut rows = Vec::new();
+    for alpha in [0.1f32, 0.5, 1.0] {
+        let single = Microfacet::new(
+            Beckmann::isotropic(a(alpha)).with_masking(BeckmannMasking::WalterRational),
+            Masking::HeightCorrelated,
+            NoFresnel::<f32>::new(),
+        );
+        let c = single.with_energy_compensation().unwrap();
+        for theta in [0.0f32, 60.0, 85.0] {
+            let (e, ss) = split_albedo(&c, &single, dir(theta));
+            rows.push(Furnace {
+                label: format!("α = {alpha:<4} θo = {theta:>2}°"),
+                compensated: e,
+                sampled: None,
+                single: ss,
+            });
+        }
+    }
+    judge(
+        "Beckmann with Walter's rational G1, F = 1",
+        &rows,
+        0.005,
+        true,
+    );
+
+    let mut rows = Vec::new();
+    // (αx, αy) and the range of the furnace documented in `CompensatedMicrofacet`.
+    for ((ax, ay), (lo, hi)) in [
+        ((0.2f32, 0.3f32), (0.97, 1.02)),
+        ((0.1, 0.4), (0.90, 1.04)),
+        ((0.05, 0.8), (0.74, 1.06)),
+    ] {
+        let single = Microfacet::new(
+            Ggx::new(a(ax), a(ay)),
+            Masking::HeightCorrelated,
+            NoFresnel::<f32>::new(),
+        );
+        let c = single.with_energy_compensation().unwrap();
+        let (mut least, mut most) = (f64::INFINITY, f64::NEG_INFINITY);
+        for theta in [0.0f32, 60.0, 85.0] {
+            for phi in [0.0f32, 0.8, 1.6] {
+                let (s, co) = theta.to_radians().sin_cos();
+                let wo = Vec3::new(s * phi.cos(), s * phi.sin(), co);
+                let (e, ss) = split_albedo(&c, &single, wo);
+                least = least.min(e.mean - 3.0 * e.std_err);
+                most = most.max(e.mean + 3.0 * e.std_err);
+                rows.push(Furnace {
+                    label: format!("α = ({ax}, {ay}) θo = {theta:>2}° φo = {phi}"),
+                    compensated: e,
+                    sampled: None,
+                    single: ss,
+                });
+            }
+        }
+        eprintln!(
+            "α = ({ax}, {ay}): furnace from {least:.4} to {most:.4} (documented {lo} to {hi})"
+        );
+        assert!(
+            least >= lo && most <= hi,
+            "α = ({ax}, {ay}): {least}..{most} outside the documented {lo}..{hi}"
+        );
+    }
+    judge(
+        "anisotropic GGX at its RMS width, F = 1 (not held to the bar)",
+        &rows,
+        0.005,
+        false,
+    );
+}
+
+const DIELECTRIC_ETAS: [f32; 4] = [1.1, 1.33, 1.5, 2.0];
+const DIELECTRIC_ALPHAS: [f32; 4] = [0.05, 0.2, 0.5, 1.0];
+/// Outside (0°–85°) and inside (95°–180°).
+const DIELECTRIC_THETAS: [f32; 8] = [0.0, 40.0, 70.0, 85.0, 180.0, 140.0, 110.0, 95.0];
+
+/// The importance-mode furnace of compensated rough dielectrics.
+fn dielectric_furnace<D: TabulatedDielectric + Copy>(
+    dist: impl Fn(Alpha) -> D,
+    etas: &[f32],
+    alphas: &[f32],
+    sampled: usize,
+) -> Vec<Furnace> {
+    let mut rows = Vec::new();
+    for &n in etas {
+        for &alpha in alphas {
+            let single =
+                RoughDielectric::new(dist(a(alpha)), eta(n)).with_mode(TransportMode::Importance);
+            let c = single.with_energy_compensation().unwrap();
+            for theta in DIELECTRIC_THETAS {
+                let wo = dir(theta);
+                let (e, ss) = split_albedo(&c, &single, wo);
+                rows.push(Furnace {
+                    label: format!("η = {n:<4} α = {alpha:<4} θo = {theta:>3}°"),
+                    compensated: e,
+                    sampled: (sampled > 0).then(|| {
+                        albedo_sampled(
+                            &c,
+                            wo,
+                            &BxdfCheck {
+                                samples: sampled,
+                                seed: 37,
+                            },
+                        )
+                    }),
+                    single: ss,
+                });
+            }
+        }
+    }
+    rows
+}
+
+/// Bar: the compensated rough dielectric's reflection + transmission albedo is `1 ± 0.01`
+/// from both sides for `η ∈ {1.1, 1.33, 1.5, 2}`, `α ∈ [0.05, 1]`, importance mode.
+#[test]
+fn dielectrics_pass_the_white_furnace_from_both_sides() {
+    let ggx = dielectric_furnace(Ggx::isotropic, &DIELECTRIC_ETAS, &DIELECTRIC_ALPHAS, 20_000);
+    judge("GGX rough dielectric, importance", &ggx, 0.01, true);
+}
+
+/// The radiance-mode interface is the importance-mode one with the transmission scaled by
+/// `1/η'²`, pair by pair (so its albedo is `R + T/η'²`), and `η < 1` is the same interface
+/// seen from the other side.
+#[test]
+fn radiance_mode_and_inverse_index_relations_hold() {
+    let mut rng = Pcg32::new(5, 0);
+    let (mut worst, mut worst_flip) = (0.0_f64, 0.0_f64);
+    for (n, alpha) in [(1.5f32, 0.4f32), (1.1, 1.0), (2.0, 0.1)] {
+        let d = Ggx::isotropic(a(alpha));
+        let imp = RoughDielectric::new(d, eta(n))
+            .with_mode(TransportMode::Importance)
+            .with_energy_compensation()
+            .unwrap();
+        let rad = RoughDielectric::new(d, eta(n))
+            .with_energy_compensation()
+            .unwrap();
+        // The same interface described from the other side: η → 1/η, z → −z.
+        let flipped = RoughDielectric::new(d, eta(1.0 / n))
+            .with_mode(TransportMode::Importance)
+            .with_energy_compensation()
+            .unwrap();
+        for _ in 0..20_000 {
+            let wo = lobe::sampling::uniform_sphere(rng.next_vec2());
+            let wi = lobe::sampling::uniform_sphere(rng.next_vec2());
+            let (fi, fr) = (f64::from(imp.eval(wo, wi)), f64::from(rad.eval(wo, wi)));
+            let crossing = wo.z * wi.z < 0.0;
+            let etap = f64::from(if wo.z > 0.0 { n } else { 1.0 / n });
+            let want = if crossing { fi / (etap * etap) } else { fi };
+            let scale = fr.abs().max(want.abs());
+            if scale > 1e-30 {
+                worst = worst.max((fr - want).abs() / scale);
+            }
+            let mirror = |w: Vec3| Vec3::new(w.x, w.y, -w.z);
+            let ff = f64::from(flipped.eval(mirror(wo), mirror(wi)));
+            let scale = fi.abs().max(ff.abs());
+            if scale > 1e-30 {
+                worst_flip = worst_flip.max((fi - ff).abs() / scale);
+            }
+        }
+    }
+    eprintln!("radiance = importance / η'² across, largest relative error {worst:.1e}");
+    eprintln!("η and 1/η seen from the other side, largest relative difference {worst_flip:.1e}");
+    assert!(worst < 1e-6, "{worst}");
+    // f32 rounding of 1/η in the single-scattering lobe and of the tables' weights.
+    assert!(worst_flip < 1e-3, "{worst_flip}");
+}
+
+/// Bar: the plastic with the compensated coat and `ρ = 1` passes the white furnace.
+#[test]
+fn compensated_plastic_passes_the_white_furnace() {
+    let mut rows = Vec::new();
+    for n in [1.5f32, 1.33, 2.0] {
+        for alpha in [0.05f32, 0.3, 1.0] {
+            for theta in [0.0f32, 45.0, 70.0, 85.0] {
+                let wo = dir(theta);
+                let d = Ggx::isotropic(a(alpha));
+                let c = Plastic::compensated(1.0f32, d, eta(n)).unwrap();
+                let s = Plastic::new(1.0f32, d, eta(n)).unwrap();
+                let coat =
+                    Microfacet::new(d, Masking::HeightCorrelated, Dielectric { eta: eta(n) });
+                let (e, old) = (split_albedo(&c, &coat, wo).0, split_albedo(&s, &coat, wo).0);
+                rows.push(Furnace {
+                    label: format!("GGX η = {n:<4} α = {alpha:<4} θo = {theta:>2}°"),
+                    compensated: e,
+                    sampled: None,
+                    single: old.mean,
+                });
+            }
+        }
+    }
+    judge(
+        "plastic ρ = 1, compensated coat (the uncompensated plastic beside)",
+        &rows,
+        0.005,
+        true,
+    );
+}
+
+/// Reciprocity, positivity, the energy bound with two estimators, chi-square and consistency
+/// through `check_bxdf`, for every compensated model; Turquin's scaling fails reciprocity
+/// (a documented property) and passes the rest.
+#[test]
+fn compensated_models_obey_the_laws() {
+    let gold_red = Conductor {
+        ior: ComplexIor::new(0.143f32, 3.983).unwrap(),
+    };
+    let n_models = 10;
+    let config = |eta: f32| Config {
+        albedo_samples: 40_000,
+        chi2_samples: 100_000,
+        pairs: 4_000,
+        consistency_samples: 4_000,
+        significance: sidak(0.01, n_models),
+        eta,
+        ..Config::default()
+    };
+    let hc = Masking::HeightCorrelated;
+    let models: Vec<(&str, Box<dyn Bxdf<Spectrum = f32>>, f32)> = vec![
+        (
+            "GGX F=1 α=1",
+            Box::new(
+                Microfacet::new(Ggx::isotropic(a(1.0)), hc, NoFresnel::new())
+                    .with_energy_compensation()
+                    .unwrap(),
+            ),
+            1.0,
+        ),
+        (
+            "GGX gold (red) α=0.3",
+            Box::new(
+                Microfacet::new(Ggx::isotropic(a(0.3)), hc, gold_red)
+                    .with_energy_compensation()
+                    .unwrap(),
+            ),
+            1.0,
+        ),
+        (
+            "GGX Schlick α=(0.1, 0.6)",
+            Box::new(
+                Microfacet::new(Ggx::new(a(0.1), a(0.6)), hc, Schlick::new(0.7f32).unwrap())
+                    .with_energy_compensation()
+                    .unwrap(),
+            ),
+            1.0,
+        ),
+        (
+            "Beckmann F=1 α=0.5",
+            Box::new(
+                Microfacet::new(Beckmann::isotropic(a(0.5)), hc, NoFresnel::new())
+                    .with_energy_compensation()
+                    .unwrap(),
+            ),
+            1.0,
+        ),
+        (
+            "rough glass GGX α=0.5 η=1.5 (importance)",
+            Box::new(
+                RoughDielectric::new(Ggx::isotropic(a(0.5)), eta(1.5))
+                    .with_mode(TransportMode::Importance)
+                    .with_energy_compensation()
+                    .unwrap(),
+            ),
+            1.0 / 1.5,
+        ),
+        (
+            "rough glass GGX α=0.8 η=1.33 (radiance)",
+            Box::new(
+                RoughDielectric::new(Ggx::isotropic(a(0.8)), eta(1.33))
+                    .with_energy_compensation()
+                    .unwrap(),
+            ),
+            1.33,
+        ),
+        (
+            "rough bubble GGX α=0.3 η=1/1.5 (importance)",
+            Box::new(
+                RoughDielectric::new(Ggx::isotropic(a(0.3)), eta(1.0 / 1.5))
+                    .with_mode(TransportMode::Importance)
+                    .with_energy_compensation()
+                    .unwrap(),
+            ),
+            1.5,
+        ),
+        (
+            "plastic GGX α=0.3 ρ=1 (compensated coat)",
+            Box::new(Plastic::compensated(1.0f32, Ggx::isotropic(a(0.3)), eta(1.5)).unwrap()),
+            1.0,
+        ),
+        (
+            "plastic GGX α=0.7 ρ=0.5 η=1.33 (compensated coat)",
+            Box::new(Plastic::compensated(0.5f32, Ggx::isotropic(a(0.7)), eta(1.33)).unwrap()),
+            1.0,
+        ),
+    ];
+    assert_eq!(models.len() + 1, n_models);
+    for (name, model, e) in &models {
+        // In radiance transport refraction scales radiance by η'², so the albedo from the
+        // denser side is bounded by η² (by 1 in importance transport, and for a BRDF).
+        let bound = if name.contains("(radiance)") {
+            f64::from(e * e)
+        } else {
+            1.0
+        };
+        let config = Config {
+            albedo_bound: bound,
+            ..config(*e)
+        };
+        let report = check_bxdf(name, model.as_ref(), &config);
+        eprint!("{report}");
+        assert!(report.passed(), "{report}");
+    }
+    let turquin = CompensatedMicrofacet::new(
+        Microfacet::new(Ggx::isotropic(a(0.7)), hc, gold_red),
+        Compensation::Turquin,
+    )
+    .unwrap();
+    let report = check_bxdf("GGX gold α=0.7, Turquin's scaling", &turquin, &config(1.0));
+    eprint!("{report}");
+    let failed: Vec<_> = report.failures().map(|l| l.law).collect();
+    assert_eq!(
+        failed,
+        vec![lobe::verify::Law::Reciprocity],
+        "Turquin's scaling is documented as failing reciprocity only: {report}"
+    );
+}
+
+/// The generator reproduces the committed tables: a sample of entries re-baked with the
+/// same integrator are the committed `f32`s, bit for bit, and the baked averages are those
+/// of the committed rows.
+#[test]
+fn generator_reproduces_the_committed_tables() {
+    let mut rng = Pcg32::new(17, 3);
+    let mut pick = |n: usize| (rng.next_u32() as usize) % n;
+    let mut checked = 0;
+    for (family, table, avg) in [
+        (Family::Ggx, &GGX_E, &GGX_E_AVG),
+        (Family::Beckmann, &BECKMANN_E, &BECKMANN_E_AVG),
+    ] {
+        for _ in 0..5 {
+            let (i, j) = (pick(MU_NODES), 1 + pick(ALPHA_NODES - 1));
+            let fresh = bake::conductor_entry(family, i, j);
+            assert_eq!(
+                fresh.to_bits(),
+                table[j][i].to_bits(),
+                "{family:?} E[{j}][{i}]: re-baked {fresh}, committed {}",
+                table[j][i]
+            );
+            checked += 1;
+        }
+        for (j, row) in table.iter().enumerate() {
+            let average = AlbedoRow::from_nodes(*row).unwrap().average();
+            assert_eq!(average.to_bits(), avg[j].to_bits(), "{family:?} E_avg[{j}]");
+        }
+    }
+    for (family, tables) in [(
+        Family::Ggx,
+        [
+            &GGX_DIELECTRIC_OUTSIDE,
+            &GGX_DIELECTRIC_REFLECTION,
+            &GGX_DIELECTRIC_INSIDE,
+        ],
+    )] {
+        for _ in 0..5 {
+            let (i, j, k) = (
+                pick(DIELECTRIC_MU_NODES),
+                1 + pick(DIELECTRIC_ALPHA_NODES - 1),
+                pick(ETA_NODES),
+            );
+            let fresh = bake::dielectric_entry(family, i, j, k);
+            for (t, v) in tables.iter().zip(fresh) {
+                assert_eq!(
+                    v.to_bits(),
+                    t[k][j][i].to_bits(),
+                    "{family:?} [{k}][{j}][{i}]"
+                );
+            }
+            checked += 1;
+        }
+    }
+    eprintln!("{checked} re-baked entries identical to the committed ones, bit for bit");
+}
+
+/// The tables' interpolation error, against fresh integration (the bake's own integrator)
+/// halfway between the nodes in every coordinate — where linear interpolation errs most —
+/// and the integrator's own error, against a ten times tighter tolerance and against Monte
+/// Carlo.
+#[test]
+fn interpolation_and_quadrature_errors_are_measured() {
+    // Conductors: midpoints in √μ and √α, in the bar's region (α ≥ 0.05, θo ≤ 85°) and out
+    // of it.
+    let mut worst_bar = (0.0_f32, String::new());
+    let mut worst_all = (0.0_f32, String::new());
+    for family in [Family::Ggx, Family::Beckmann] {
+        for (x, r) in [
+            (0.17f32, 0.23f32),
+            (0.31, 0.27),
+            (0.51, 0.41),
+            (0.74, 0.6),
+            (0.93, 0.82),
+            (0.99, 0.99),
+            (0.05, 0.1),
+            (0.3, 0.15),
+        ] {
+            // Halfway between nodes.
+            let x = ((x * 64.0).floor() + 0.5) / 64.0;
+            let r = ((r * 64.0).floor() + 0.5) / 64.0;
+            let (mu, alpha) = (x * x, r * r);
+            let wo = bake::direction(mu);
+            let (fresh, row) = match family {
+                Family::Ggx => {
+                    let d = Ggx::isotropic(a(alpha));
+                    let m = Microfacet::new(d, Masking::HeightCorrelated, NoFresnel::<f32>::new());
+                    (
+                        bake::albedo(&m, &d, None, wo, 1e-6)[0],
+                        d.conductor_albedo().unwrap(),
+                    )
+                }
+                Family::Beckmann => {
+                    let d = Beckmann::isotropic(a(alpha));
+                    let m = Microfacet::new(d, Masking::HeightCorrelated, NoFresnel::<f32>::new());
+                    (
+                        bake::albedo(&m, &d, None, wo, 1e-6)[0],
+                        d.conductor_albedo().unwrap(),
+                    )
+                }
+            };
+            let err = (row.e(mu) - fresh as f32).abs();
+            let label = format!(
+                "{family:?} μ = {mu:.4}, α = {alpha:.4}: table {:.5}, fresh {fresh:.5}",
+                row.e(mu)
+            );
+            if err > worst_all.0 {
+                worst_all = (err, label.clone());
+            }
+            if alpha >= 0.05 && mu >= 0.087 && err > worst_bar.0 {
+                worst_bar = (err, label);
+            }
+        }
+    }
+    eprintln!(
+        "conductor tables, largest interpolation error in the bar's region: {:.1e} ({})",
+        worst_bar.0, worst_bar.1
+    );
+    eprintln!(
+        "conductor tables, largest anywhere sampled: {:.1e} ({})",
+        worst_all.0, worst_all.1
+    );
+    assert!(worst_bar.0 < 2e-3, "{worst_bar:?}");
+
+    // Dielectric: midpoints in √μ, √α and √(η − 1), both sides.
+    let mut worst = (0.0_f32, String::new());
+    for (x, r, k) in [
+        (0.3f32, 0.3f32, 2usize),
+        (0.6, 0.5, 5),
+        (0.85, 0.8, 8),
+        (0.45, 0.95, 12),
+        (0.95, 0.2, 3),
+        (0.35, 0.6, 0),
+        (0.7, 0.25, 6),
+        (0.5, 0.7, 9),
+        (0.99, 0.99, 14),
+        (0.2, 0.4, 10),
+    ] {
+        let x = ((x * 32.0).floor() + 0.5) / 32.0;
+        let r = ((r * 32.0).floor() + 0.5) / 32.0;
+        let c = 0.5 * ((eta_node(k) - 1.0).sqrt() + (eta_node(k + 1) - 1.0).sqrt());
+        let (mu, alpha, n) = (x * x, r * r, 1.0 + c * c);
+        let d = Ggx::isotropic(a(alpha));
+        let m = RoughDielectric::new(d, eta(n)).with_mode(TransportMode::Importance);
+        let rows = d.dielectric_albedo(eta(n)).unwrap();
+        for (side, row) in [(1.0f32, &rows.outside), (-1.0, &rows.inside)] {
+            let fresh: f64 = bake::albedo(&m, &d, Some(eta(n)), bake::direction(side * mu), 1e-5)
+                .iter()
+                .sum();
+            let err = (row.e(mu) - fresh as f32).abs();
+            if err > worst.0 {
+                worst = (
+                    err,
+                    format!(
+                        "μ = {:.4}, α = {alpha:.4}, η = {n:.4}: table {:.5}, fresh {fresh:.5}",
+                        side * mu,
+                        row.e(mu)
+                    ),
+                );
+            }
+        }
+    }
+    eprintln!(
+        "dielectric tables, largest interpolation error: {:.1e} ({})",
+        worst.0, worst.1
+    );
+    assert!(worst.0 < 5e-3, "{worst:?}");
+
+    // The integrator: tolerance 1e-6 against 1e-7, and against 2M Monte Carlo samples.
+    let k = k_sigma(4);
+    for (alpha, mu) in [(0.05f32, 0.1f32), (0.3, 0.5), (1.0, 0.9), (0.6, 0.02)] {
+        let d = Ggx::isotropic(a(alpha));
+        let m = Microfacet::new(d, Masking::HeightCorrelated, NoFresnel::<f32>::new());
+        let wo = bake::direction(mu);
+        let (q6, q7) = (
+            bake::albedo(&m, &d, None, wo, 1e-6)[0],
+            bake::albedo(&m, &d, None, wo, 1e-7)[0],
+        );
+        let mc = albedo_sampled(
+            &m,
+            wo,
+            &BxdfCheck {
+                samples: 2_000_000,
+                seed: 19,
+            },
+        );
+        eprintln!(
+            "quadrature α = {alpha}, μ = {mu}: {q6:.7} (tol 1e-6), {q7:.7} (1e-7), Monte Carlo {}",
+            show(&mc)
+        );
+        assert!((q6 - q7).abs() < 1e-5);
+        assert!(mc.within(q6, k), "{mc} vs {q6}");
+    }
+}
+
+/// `F_avg`: Schlick's closed form equals the quadrature; the conductor's and dielectric's
+/// quadratures agree with a 16 times finer one; the dielectric's `η < 1` average through the
+/// smooth interface's reciprocity equals direct integration across the critical angle.
+#[test]
+fn fresnel_averages_are_exact() {
+    let fine = |f: &dyn Fn(f64) -> f64| {
+        // Midpoint rule on 2¹⁶ intervals, in f64.
+        let n = 1 << 16;
+        (0..n)
+            .map(|i| {
+                let mu = (i as f64 + 0.5) / n as f64;
+                2.0 * f(mu) * mu
+            })
+            .sum::<f64>()
+            / n as f64
+    };
+    let mut worst = [0.0_f64; 3];
+    for f0 in [0.04f32, 0.5, 0.95] {
+        let s = Schlick::new(f0).unwrap();
+        let want = fine(&|mu| f64::from(lobe::fresnel::schlick(f0, mu as f32)));
+        worst[0] = worst[0].max((f64::from(s.average()) - want).abs());
+        let quad = cosine_weighted_average(|mu| lobe::fresnel::schlick(f0, mu));
+        worst[0] = worst[0].max((f64::from(quad) - want).abs());
+    }
+    for (n, k) in [(0.143f32, 3.983f32), (1.5, 0.0), (0.2, 1.0), (1.0, 0.0)] {
+        let c = Conductor {
+            ior: ComplexIor::new(n, k).unwrap(),
+        };
+        let want = fine(&|mu| f64::from(lobe::fresnel::conductor(mu as f32, &c.ior)));
+        worst[1] = worst[1].max((f64::from(c.average()) - want).abs());
+    }
+    for n in [1.1f32, 1.5, 2.4, 1.0 / 1.33, 1.0 / 1.5, 1.0 / 2.4] {
+        let d = Dielectric { eta: eta(n) };
+        let want = fine(&|mu| f64::from(dielectric(mu as f32, eta(n))));
+        eprintln!("F_avg(η = {n:.4}) = {:.7} (direct {want:.7})", d.average());
+        worst[2] = worst[2].max((f64::from(d.average()) - want).abs());
+    }
+    eprintln!(
+        "F_avg against a 2¹⁶-interval midpoint rule in f64: Schlick {:.1e}, conductor {:.1e}, dielectric {:.1e}",
+        worst[0], worst[1], worst[2]
+    );
+    // The documented bounds (`fresnel::cosine_weighted_average`, `FresnelAverage`).
+    assert!(
+        worst[0] < 1e-6 && worst[1] < 1e-6 && worst[2] < 1e-6,
+        "{worst:?}"
+    );
+}
+
+/// A furnace run over a small grid for a fault check: how many points fall outside the bar.
+fn faulty_furnace(row: AlbedoRow, alpha: f32) -> usize {
+    let single = Microfacet::new(
+        Ggx::isotropic(a(alpha)),
+        Masking::HeightCorrelated,
+        NoFresnel::<f32>::new(),
+    );
+    let c = CompensatedMicrofacet::with_albedo(single, row, Compensation::KullaConty);
+    let rows: Vec<Furnace> = [0.0f32, 45.0, 70.0, 85.0]
+        .iter()
+        .map(|&theta| {
+            let (e, ss) = split_albedo(&c, &single, dir(theta));
+            Furnace {
+                label: format!("α = {alpha} θo = {theta}°"),
+                compensated: e,
+                sampled: None,
+                single: ss,
+            }
+        })
+        .collect();
+    judge("fault check", &rows, 0.005, false)
+}
+
+/// Fault checks: the furnace test catches a table transposed in `(μ, α)` and an `E_avg` taken
+/// from the wrong distribution, while the right table passes the same run.
+#[test]
+fn furnace_catches_a_transposed_table_and_a_foreign_average() {
+    let mut transposed: ConductorTable = GGX_E;
+    for (j, row) in transposed.iter_mut().enumerate() {
+        for (i, v) in row.iter_mut().enumerate() {
+            *v = GGX_E[i][j];
+        }
+    }
+    let mut caught = 0;
+    for alpha in [0.2f32, 0.6, 1.0] {
+        let right = AlbedoRow::from_table(&GGX_E, &GGX_E_AVG, alpha).unwrap();
+        assert_eq!(
+            faulty_furnace(right, alpha),
+            0,
+            "the right table fails at α = {alpha}"
+        );
+        let t = AlbedoRow::from_table(&transposed, &GGX_E_AVG, alpha).unwrap();
+        let foreign = right
+            .with_average(
+                AlbedoRow::from_table(&BECKMANN_E, &BECKMANN_E_AVG, alpha)
+                    .unwrap()
+                    .average(),
+            )
+            .unwrap();
+        let (a_t, a_f) = (faulty_furnace(t, alpha), faulty_furnace(foreign, alpha));
+        eprintln!(
+            "α = {alpha}: transposed table {a_t} of 4 points outside, Beckmann's E_avg {a_f} of 4"
+        );
+        caught += usize::from(a_t > 0) + 10 * usize::from(a_f > 0);
+    }
+    assert!(caught % 10 > 0, "the transposed table went unnoticed");
+    assert!(caught / 10 > 0, "the foreign E_avg went unnoticed");
+}
+
+/// Constructors refuse what the tables do not hold, naming the parameter.
+#[test]
+fn constructors_refuse_what_the_tables_do_not_hold() {
+    let sep = Microfacet::new(
+        Ggx::isotropic(a(0.3)),
+        Masking::Separable,
+        NoFresnel::<f32>::new(),
+    );
+    assert!(
+        sep.with_energy_compensation()
+            .unwrap_err()
+            .param()
+            .starts_with("masking")
+    );
+    let wide = Microfacet::new(
+        Ggx::isotropic(a(1.5)),
+        Masking::HeightCorrelated,
+        NoFresnel::<f32>::new(),
+    );
+    assert_eq!(
+        wide.with_energy_compensation().unwrap_err().param(),
+        "alpha (compensated)"
+    );
+    let matched = RoughDielectric::new(Ggx::isotropic(a(0.3)), eta(1.005));
+    assert_eq!(
+        matched.with_energy_compensation().unwrap_err().param(),
+        "eta (compensated)"
+    );
+    let dense = RoughDielectric::new(Ggx::isotropic(a(0.3)), eta(3.5));
+    assert_eq!(
+        dense.with_energy_compensation().unwrap_err().param(),
+        "eta (compensated)"
+    );
+    assert!(
+        RoughDielectric::new(Ggx::isotropic(a(0.3)), eta(0.5))
+            .with_energy_compensation()
+            .is_ok()
+    );
+    assert!(Plastic::compensated(0.5f32, Ggx::isotropic(a(0.3)), eta(0.8)).is_err());
+    assert_eq!(
+        Plastic::compensated(1.5f32, Ggx::isotropic(a(0.3)), eta(1.5))
+            .unwrap_err()
+            .param(),
+        "reflectance"
+    );
+    // The table's α = 0 column and μ nodes: E = 1 for the mirror.
+    assert!(GGX_E[0].iter().all(|&e| e == 1.0));
+    assert!((alpha_node(ALPHA_NODES - 1, ALPHA_NODES) - 1.0).abs() < 1e-7);
+}
+
+/// The batched calls give the scalar calls' numbers, bit for bit, for the compensated
+/// models (`lobe::batch`'s default loops over their `Prepare` code), over random and
+/// adversarial lanes.
+#[test]
+fn batched_calls_equal_the_scalar_path() {
+    use lobe::batch::{Batch, SampleOut, Vec2s, Vec3s, Vec3sMut};
+    const N: usize = 2051;
+    let mut rng = Pcg32::new(43, 1);
+    let dir = |rng: &mut Pcg32| match rng.next_u32() % 6 {
+        0 => Vec3::new(1.0, 0.0, 0.0),
+        1 => Vec3::Z,
+        2 => Vec3::new(0.0, 0.6, -0.8),
+        _ => lobe::sampling::uniform_sphere(rng.next_vec2()),
+    };
+    let wo: Vec<Vec3> = (0..N).map(|_| dir(&mut rng)).collect();
+    let wi: Vec<Vec3> = (0..N).map(|_| dir(&mut rng)).collect();
+    let u: Vec<Vec2> = (0..N).map(|_| rng.next_vec2()).collect();
+    let uc: Vec<f32> = (0..N).map(|_| rng.next_f32()).collect();
+    let split = |v: &[Vec3]| -> [Vec<f32>; 3] {
+        [
+            v.iter().map(|w| w.x).collect(),
+            v.iter().map(|w| w.y).collect(),
+            v.iter().map(|w| w.z).collect(),
+        ]
+    };
+    let ([ox, oy, oz], [ix, iy, iz]) = (split(&wo), split(&wi));
+    let (ux, uy): (Vec<f32>, Vec<f32>) = u.iter().map(|v| (v.x, v.y)).unzip();
+    let same = |a: f32, b: f32| a == b || (a.is_nan() && b.is_nan());
+
+    fn run<M: Batch<Spectrum = f32> + Bxdf<Spectrum = f32>>(
+        name: &str,
+        m: &M,
+        lanes: (Vec3s<'_>, Vec3s<'_>, Vec2s<'_>, &[f32]),
+        inputs: (&[Vec3], &[Vec3], &[Vec2]),
+        same: impl Fn(f32, f32) -> bool,
+    ) {
+        let (wo_s, wi_s, u_s, uc) = lanes;
+        let (wo, wi, u) = inputs;
+        let n = wo.len();
+        let mut f = vec![0.0; n];
+        m.eval_batch(wo_s, wi_s, &mut f).unwrap();
+        let mut pdf = vec![0.0; n];
+        m.pdf_batch(wo_s, wi_s, &mut pdf).unwrap();
+        let (mut sx, mut sy, mut sz, mut sf, mut sp) = (
+            vec![0.0; n],
+            vec![0.0; n],
+            vec![0.0; n],
+            vec![0.0; n],
+            vec![0.0; n],
+        );
+        m.sample_batch(
+            wo_s,
+            u_s,
+            uc,
+            SampleOut {
+                wi: Vec3sMut {
+                    x: &mut sx,
+                    y: &mut sy,
+                    z: &mut sz,
+                },
+                f: &mut sf,
+                pdf: &mut sp,
+            },
+        )
+        .unwrap();
+        for k in 0..n {
+            assert!(same(f[k], m.eval(wo[k], wi[k])), "{name}: eval lane {k}");
+            assert!(same(pdf[k], m.pdf(wo[k], wi[k])), "{name}: pdf lane {k}");
+            match m.sample(wo[k], u[k], uc[k]) {
+                Some(s) => assert!(
+                    same(sx[k], s.wi.x)
+                        && same(sz[k], s.wi.z)
+                        && same(sf[k], s.f)
+                        && same(sp[k], s.pdf),
+                    "{name}: sample lane {k}"
+                ),
+                None => assert_eq!(sp[k], 0.0, "{name}: sample lane {k}"),
+            }
+        }
+    }
+    let lanes = || {
+        (
+            Vec3s {
+                x: &ox,
+                y: &oy,
+                z: &oz,
+            },
+            Vec3s {
+                x: &ix,
+                y: &iy,
+                z: &iz,
+            },
+            Vec2s { x: &ux, y: &uy },
+            &uc[..],
+        )
+    };
+    let inputs = (&wo[..], &wi[..], &u[..]);
+    let hc = Masking::HeightCorrelated;
+    run(
+        "GGX compensated",
+        &Microfacet::new(Ggx::isotropic(a(0.6)), hc, NoFresnel::<f32>::new())
+            .with_energy_compensation()
+            .unwrap(),
+        lanes(),
+        inputs,
+        same,
+    );
+    run(
+        "GGX Turquin",
+        &CompensatedMicrofacet::new(
+            Microfacet::new(Ggx::isotropic(a(0.6)), hc, Schlick::new(0.5f32).unwrap()),
+            Compensation::Turquin,
+        )
+        .unwrap(),
+        lanes(),
+        inputs,
+        same,
+    );
+    run(
+        "rough glass compensated",
+        &RoughDielectric::new(Ggx::isotropic(a(0.4)), eta(1.5))
+            .with_energy_compensation()
+            .unwrap(),
+        lanes(),
+        inputs,
+        same,
+    );
+    run(
+        "plastic compensated",
+        &Plastic::compensated(0.7f32, Ggx::isotropic(a(0.4)), eta(1.5)).unwrap(),
+        lanes(),
+        inputs,
+        same,
+    );
+}
