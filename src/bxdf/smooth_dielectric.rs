@@ -44,6 +44,13 @@ impl SmoothDielectric {
     pub fn with_mode(self, mode: TransportMode) -> Self {
         Self { mode, ..self }
     }
+
+    /// The relative index of refraction.
+    #[inline(always)]
+    #[must_use]
+    pub fn eta(&self) -> Eta {
+        self.eta
+    }
 }
 
 impl Prepare for SmoothDielectric {
