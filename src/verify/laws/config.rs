@@ -66,7 +66,7 @@ pub struct Config {
     /// sampled at its own scale. Default `(1, 1)`.
     pub stretch: Vec2,
     /// For a [`stochastic`](crate::bxdf::Bxdf::stochastic) model (laws in expectation): the
-    /// independent estimates averaged per value — each side of a reciprocity pair — and, four
+    /// independent estimates averaged per value — each side of a reciprocity pair — and, sixteen
     /// times as many, per bin of the expected density and value. Default 64.
     pub expectation_evaluations: usize,
     /// For a stochastic model: the direction pairs of reciprocity in expectation.
