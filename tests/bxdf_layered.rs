@@ -17,7 +17,7 @@ use lobe::{Alpha, Eta, Vec2, Vec3, metals};
 
 /// Statistical tests in this file (harness runs count as one each; the closed-form and
 /// furnace comparisons one per configuration).
-const TESTS: usize = 8 + 12 + 18 + 3;
+const TESTS: usize = 8 + 12 + 18 + 4;
 
 fn ggx(a: f32) -> Ggx {
     Ggx::isotropic(Alpha::new(a).unwrap())
@@ -278,6 +278,33 @@ fn estimates_are_deterministic_and_seeded() {
     let l = Lambert::new(0.5_f32).unwrap();
     assert_eq!(l.eval_seeded(wo, wi, 9), l.eval(wo, wi));
     assert_eq!(l.pdf_seeded(wo, wi, 9), l.pdf(wo, wi));
+}
+
+/// A sample's `pdf` is an independent estimate of the density at its direction: averaged
+/// over the sampler's directions it estimates `∫ p² dω`, as `pdf_seeded` at the same
+/// directions does; its weight is the walk's (checked in expectation by `check_bxdf`).
+#[test]
+fn a_samples_pdf_estimates_the_density_at_its_direction() {
+    let k = common::k_sigma(0.01, TESTS);
+    let m = CoatedDiffuse::coated_diffuse(0.8_f32, ggx(0.3), eta(1.5)).unwrap();
+    let mut rng = lobe::verify::Pcg32::new(11, 3);
+    let (mut own, mut other) = (Accumulator::new(), Accumulator::new());
+    let wo = common::dir(40.0, 0.3);
+    for i in 0..100_000_u64 {
+        if let Some(s) = m.sample(wo, rng.next_vec2(), rng.next_f32()) {
+            own.push(f64::from(s.pdf));
+            other.push(f64::from(m.pdf_seeded(wo, s.wi, 1_000_000 + i)));
+        } else {
+            own.push(0.0);
+            other.push(0.0);
+        }
+    }
+    let (a, b) = (own.finish(), other.finish());
+    eprintln!("E[sample().pdf] = {a}, E[pdf(wo, sample().wi)] = {b}");
+    assert!(
+        (a.mean - b.mean).abs() <= k * a.std_err.hypot(b.std_err),
+        "{a} {b}"
+    );
 }
 
 /// The spread of one estimate, for the docs: the relative standard deviation of `eval` and

@@ -3,7 +3,7 @@
 
 use super::henyey_greenstein::HenyeyGreenstein;
 use super::walk_rng::{Hasher, WalkRng};
-use super::{At, Bxdf, BxdfSample, LayerInterface, Lobes, Prepare, TransportMode};
+use super::{At, Bxdf, BxdfSample, LayerInterface, Lobes, Prepare, TransportMode, usable_pdf};
 use crate::frame::refract;
 use crate::fresnel::dielectric;
 use crate::param::{ParamError, unit_interval};
@@ -63,8 +63,11 @@ const TAG_SAMPLE: u64 = 0x7361_6d70;
 /// of the first; here both weights use the same two densities, so the estimator is unbiased),
 /// Russian roulette after four events once the throughput is below ¼. [`Bxdf::sample`] walks
 /// from `wo` until the path leaves through the top (pbrt-v4's `Sample_f`, without its Russian
-/// roulette, which would make the density depend on the spectrum): the sample's `f` and `pdf`
-/// are the path's throughput and density, whose ratio is the unbiased weight. [`Bxdf::pdf`]
+/// roulette, which would make the density depend on the spectrum): the sample's
+/// [`weight`](BxdfSample::weight) is the path's unbiased weight, its `pdf` an independent
+/// estimate of the density at its direction (one more walk, what `pdf` computes: a renderer
+/// weighs it by MIS as it would an exact model's; pbrt-v4 returns the path's density and
+/// flags it), its `f` the value that keeps the weight. [`Bxdf::pdf`]
 /// is an unbiased estimate of the density of [`Bxdf::sample`]'s directions — not pbrt-v4's
 /// approximation, which mixes in a uniform density: the same walk as the sampler, summing at
 /// each hit of the top from inside the density of leaving there toward `wi` (a rough top),
@@ -354,6 +357,92 @@ impl<T: LayerInterface, B: Bxdf> Layered<T, B> {
         let t = 1.0 - dielectric(down.z, eta);
         let e = eta.get();
         (t * wi.z.abs() / (e * e * w_star.z.abs())).max(0.0)
+    }
+
+    /// One walk of `sample` from `wo` (prepared in `at`): pbrt-v4's `Sample_f` without its
+    /// Russian roulette. Returns the direction that leaves, the path's weight (the product of
+    /// `f |cos| / pdf` along it), its density (the product of the densities, in `f64` so that
+    /// it neither overflows nor underflows) and its lobe.
+    fn walk_sample(
+        &self,
+        at: &At<T::Prepared>,
+        u: Vec2,
+        uc: f32,
+    ) -> Option<(Vec3, B::Spectrum, f64, Lobes)> {
+        let wo = at.wo;
+        if !(wo.z > 0.0) {
+            return None;
+        }
+        let s0 = self.top.sample_prepared(&at.state, u, uc)?;
+        if !usable(&s0) {
+            return None;
+        }
+        let w0 = B::Spectrum::splat(weight(&s0));
+        if s0.wi.z > 0.0 {
+            // Reflected at the entry.
+            return Some((s0.wi, w0, f64::from(s0.pdf), s0.lobe));
+        }
+        let mut rng = Hasher::new(TAG_SAMPLE, 0)
+            .vec3(wo)
+            .float(u.x)
+            .float(u.y)
+            .float(uc)
+            .rng();
+        let mut beta = w0;
+        let mut pdf = f64::from(s0.pdf);
+        let mut specular = s0.is_specular();
+        let mut glossy = s0.lobe.intersects(Lobes::GLOSSY);
+        let mut walk = Walk {
+            z: self.thickness,
+            w: s0.wi,
+            at_top: true,
+        };
+        for _ in 0..self.max_depth {
+            if walk.w.z == 0.0 {
+                return None;
+            }
+            if self.advance(&mut walk, &mut beta, &mut rng) {
+                let ps = self.phase.sample(-walk.w, rng.next_vec2());
+                if !(ps.pdf > 0.0 && ps.wi.z != 0.0) {
+                    return None;
+                }
+                beta = beta * self.albedo;
+                pdf *= f64::from(ps.pdf);
+                specular = false;
+                walk.w = ps.wi;
+                continue;
+            }
+            let (u, uc) = (rng.next_vec2(), rng.next_f32());
+            // The interface's sample: direction, weight, density, lobe.
+            let (wi, w, p, lobe) = if walk.at_top {
+                let s = self.top.sample(-walk.w, u, uc).filter(usable)?;
+                (s.wi, B::Spectrum::splat(weight(&s)), s.pdf, s.lobe)
+            } else {
+                let s = self.bottom.sample(-walk.w, u, uc).filter(usable)?;
+                if s.wi.z < 0.0 {
+                    // Through the base: the light leaves the stack.
+                    return None;
+                }
+                (s.wi, weight(&s), s.pdf, s.lobe)
+            };
+            beta = beta * w;
+            pdf *= f64::from(p);
+            specular &= lobe.is_specular();
+            glossy |= lobe.intersects(Lobes::GLOSSY);
+            if walk.at_top && wi.z > 0.0 {
+                // Out through the top.
+                let kind = if specular {
+                    Lobes::SPECULAR
+                } else if glossy {
+                    Lobes::GLOSSY
+                } else {
+                    Lobes::DIFFUSE
+                };
+                return Some((wi, beta, pdf, Lobes::REFLECTION | kind));
+            }
+            walk.w = wi;
+        }
+        None
     }
 
     /// One walk of `eval`: the light leaving toward `wi` from the paths that enter from `wo`
@@ -662,100 +751,37 @@ impl<T: LayerInterface, B: Bxdf> Prepare for Layered<T, B> {
         u: Vec2,
         uc: f32,
     ) -> Option<BxdfSample<B::Spectrum>> {
-        let wo = at.wo;
-        if !(wo.z > 0.0) {
-            return None;
-        }
-        let s0 = self.top.sample_prepared(&at.state, u, uc)?;
-        if !usable(&s0) {
-            return None;
-        }
-        if s0.wi.z > 0.0 {
-            // Reflected at the entry.
-            return Some(BxdfSample {
-                wi: s0.wi,
-                f: B::Spectrum::splat(s0.f),
-                pdf: s0.pdf,
-                lobe: s0.lobe,
-                eta: 1.0,
-            });
-        }
-        let mut rng = Hasher::new(TAG_SAMPLE, 0)
-            .vec3(wo)
-            .float(u.x)
-            .float(u.y)
-            .float(uc)
-            .rng();
-        // The path's weight (products of f |cos| / pdf) and density, kept apart so that
-        // neither overflows.
-        let mut beta = B::Spectrum::splat(weight(&s0));
-        let mut pdf = f64::from(s0.pdf);
-        let mut specular = s0.is_specular();
-        let mut glossy = s0.lobe.intersects(Lobes::GLOSSY);
-        let mut walk = Walk {
-            z: self.thickness,
-            w: s0.wi,
-            at_top: true,
+        let (wi, beta, path_pdf, lobe) = self.walk_sample(at, u, uc)?;
+        // A sample from a lobe with a density carries an independent estimate of the density
+        // at its direction (what `pdf` returns, for a renderer's MIS) and the value that keeps
+        // its weight the walk's; a delta sample, the path's probability.
+        let estimate = if lobe.is_specular() {
+            0.0
+        } else {
+            let seed = Hasher::new(TAG_SAMPLE, 1)
+                .float(u.x)
+                .float(u.y)
+                .float(uc)
+                .rng()
+                .next_u32();
+            self.pdf_seeded_prepared(at, wi, u64::from(seed))
         };
-        for _ in 0..self.max_depth {
-            if walk.w.z == 0.0 {
-                return None;
-            }
-            if self.advance(&mut walk, &mut beta, &mut rng) {
-                let ps = self.phase.sample(-walk.w, rng.next_vec2());
-                if !(ps.pdf > 0.0 && ps.wi.z != 0.0) {
-                    return None;
-                }
-                beta = beta * self.albedo;
-                pdf *= f64::from(ps.pdf);
-                specular = false;
-                walk.w = ps.wi;
-                continue;
-            }
-            let (u, uc) = (rng.next_vec2(), rng.next_f32());
-            if walk.at_top {
-                let s = self.top.sample(-walk.w, u, uc).filter(usable)?;
-                beta = beta * weight(&s);
-                pdf *= f64::from(s.pdf);
-                specular &= s.is_specular();
-                glossy |= s.lobe.intersects(Lobes::GLOSSY);
-                if s.wi.z > 0.0 {
-                    // Out through the top.
-                    let kind = if specular {
-                        Lobes::SPECULAR
-                    } else if glossy {
-                        Lobes::GLOSSY
-                    } else {
-                        Lobes::DIFFUSE
-                    };
-                    let pdf = (pdf as f32).clamp(1e-30, 1e30);
-                    let f = beta * (pdf / s.wi.z);
-                    if !f.is_finite() {
-                        return None;
-                    }
-                    return Some(BxdfSample {
-                        wi: s.wi,
-                        f,
-                        pdf,
-                        lobe: Lobes::REFLECTION | kind,
-                        eta: 1.0,
-                    });
-                }
-                walk.w = s.wi;
-            } else {
-                let s = self.bottom.sample(-walk.w, u, uc).filter(usable)?;
-                if s.wi.z < 0.0 {
-                    // Through the base: the light leaves the stack.
-                    return None;
-                }
-                beta = beta * weight(&s);
-                pdf *= f64::from(s.pdf);
-                specular &= s.is_specular();
-                glossy |= s.lobe.intersects(Lobes::GLOSSY);
-                walk.w = s.wi;
-            }
+        let pdf = if usable_pdf(estimate) {
+            estimate
+        } else {
+            (path_pdf as f32).clamp(1e-30, 1e30)
+        };
+        let f = beta * (pdf / wi.z.abs());
+        if !(f.is_finite() && wi.z != 0.0) {
+            return None;
         }
-        None
+        Some(BxdfSample {
+            wi,
+            f,
+            pdf,
+            lobe,
+            eta: 1.0,
+        })
     }
 
     fn lobes(&self) -> Lobes {

@@ -2,6 +2,7 @@
 
 use super::{At, BxdfSample, Lobes, Prepare, usable_pdf};
 use crate::param::ParamError;
+use crate::spectrum::Spectrum;
 use glam::{Vec2, Vec3};
 
 /// The largest `f32` below 1: a remapped lobe-choice number stays in `[0, 1)`.
@@ -24,9 +25,10 @@ const ONE_MINUS_EPSILON: f32 = 1.0 - f32::EPSILON / 2.0;
 /// direction (one-sample MIS with the balance heuristic, Veach 1997 §9.2.4), so that it is
 /// exactly what `eval` and `pdf` give. A delta sample returns the chosen model's value and
 /// probability scaled by the choice's probability. When either part is
-/// [`stochastic`](super::Bxdf::stochastic), every sample is of that second kind (the chosen
-/// model's throughput and path density, scaled): a random walk's `f` and `pdf` are not a
-/// value and a density that could be blended, while their ratio stays the unbiased weight.
+/// [`stochastic`](super::Bxdf::stochastic), a sample keeps the chosen model's weight (a
+/// one-sample estimator: a random walk's weight is not a value that could be blended) and
+/// carries an estimate of the mixture's density at its direction, the chosen model's
+/// estimate blended with the other's `pdf`, with the value `f = weight · pdf / |cos θi|`.
 ///
 /// Laws (measured by `tests/bxdf_mix.rs`): whatever the parts meet, since value and pdf are
 /// exactly the weighted sums and the albedo the weighted sum of theirs (within Monte Carlo
@@ -146,7 +148,7 @@ impl<A: Prepare, B: Prepare<Spectrum = A::Spectrum>> Prepare for Mix<A, B> {
             let uc = ((uc - wa) / self.weight).clamp(0.0, ONE_MINUS_EPSILON);
             (self.b.sample_prepared(&at.state.1, u, uc)?, self.weight)
         };
-        if s.is_specular() || self.stochastic() {
+        if s.is_specular() {
             let pdf = p * s.pdf;
             if !usable_pdf(pdf) {
                 return None;
@@ -156,6 +158,21 @@ impl<A: Prepare, B: Prepare<Spectrum = A::Spectrum>> Prepare for Mix<A, B> {
                 pdf,
                 ..s
             });
+        }
+        if self.stochastic() {
+            // The chosen part's weight, an estimate of the mixture's density at the direction
+            // (the chosen part's own estimate, the other's `pdf`), and the value that keeps the
+            // weight.
+            let pdf = if choose_a {
+                self.blend_pdf(s.pdf, self.b.pdf_prepared(&at.state.1, s.wi))
+            } else {
+                self.blend_pdf(self.a.pdf_prepared(&at.state.0, s.wi), s.pdf)
+            };
+            if !usable_pdf(pdf) || s.wi.z == 0.0 {
+                return None;
+            }
+            let f = s.weight() * (pdf / s.wi.z.abs());
+            return f.is_finite().then_some(BxdfSample { f, pdf, ..s });
         }
         // The other model's value and density at the sampled direction; the sampled model's
         // from its sample (the numbers its eval and pdf give).

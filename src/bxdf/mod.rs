@@ -340,10 +340,12 @@ pub trait Bxdf {
     /// independent estimates, one per seed, whose expectation is the BSDF's value and
     /// density. Its laws hold in expectation, and
     /// [`verify::check_bxdf`](crate::verify::check_bxdf) checks them so when this says so.
-    /// For such a model a [`BxdfSample`]'s `f` and `pdf` are the random walk's throughput and
-    /// path density: their ratio [`BxdfSample::weight`] is the unbiased weight, and
-    /// [`pdf`](Self::pdf) is what to use for multiple importance sampling (pbrt-v4's
-    /// `pdfIsProportional`).
+    /// For such a model a [`BxdfSample`]'s [`weight`](BxdfSample::weight) is the random walk's
+    /// unbiased weight, its `pdf` an independent estimate of the density at its direction
+    /// (the kind of number [`pdf`](Self::pdf) returns, for multiple importance sampling) and
+    /// its `f` the value that makes `f |cos θi| / pdf` that weight; so MIS code written for
+    /// exact models works unchanged (pbrt-v4 returns the path's density instead and flags it
+    /// `pdfIsProportional`, leaving the renderer to call `pdf`).
     ///
     /// A provided method: an exact model, the crate's or a user's, need not mention it.
     #[inline(always)]
