@@ -23,7 +23,7 @@ const MAX_COUNT: u32 = 4096;
 const MAX_G: f32 = 0.99;
 /// Tags that keep the generators of `eval`, `pdf` and `sample` apart.
 const TAG_EVAL: u64 = 0x6576_616c;
-const TAG_PDF: u64 = 0x7064_66;
+const TAG_PDF: u64 = 0x0070_6466;
 const TAG_SAMPLE: u64 = 0x7361_6d70;
 
 /// A stochastic layered BSDF: a dielectric interface `T` (the coat) over a base `B` (any
@@ -86,6 +86,10 @@ const TAG_SAMPLE: u64 = 0x7361_6d70;
 /// `CoatedConductor` (coat `α = 0.1`, copper `α = 0.3`); with four walks, half of each. A
 /// renderer averages it over the pixel like any other noise; the expectation is what the
 /// laws speak of.
+///
+/// **Cost** (`benches/combinators.rs`, RGB, one walk): `eval` 0.47 µs, `pdf` 0.52 µs,
+/// `sample` 0.84 µs for the `CoatedDiffuse` above, 0.65, 0.64 and 1.1 µs for the
+/// `CoatedConductor`; `n` walks cost `n` times as much.
 ///
 /// **Laws** (measured by `tests/bxdf_layered.rs` and `tests/layered_reference.rs`, in
 /// expectation: [`verify::check_bxdf`](crate::verify::check_bxdf) checks a
@@ -208,7 +212,7 @@ impl<T: LayerInterface, B: Bxdf> Layered<T, B> {
     /// # Errors
     /// [`ParamError`] naming `thickness` for NaN or a value outside `[0, 1000]`.
     pub fn with_thickness(self, thickness: f32) -> Result<Self, ParamError> {
-        if !(thickness >= 0.0 && thickness <= MAX_THICKNESS) {
+        if !(0.0..=MAX_THICKNESS).contains(&thickness) {
             return Err(ParamError::new("thickness", thickness, "[0, 1000]"));
         }
         Ok(Self { thickness, ..self })
@@ -222,7 +226,7 @@ impl<T: LayerInterface, B: Bxdf> Layered<T, B> {
     /// [`ParamError`] naming `albedo` or `g` for NaN or out-of-range values.
     pub fn with_medium(self, albedo: B::Spectrum, g: f32) -> Result<Self, ParamError> {
         let albedo = unit_interval("albedo", albedo)?;
-        if !(g >= -MAX_G && g <= MAX_G) {
+        if !(-MAX_G..=MAX_G).contains(&g) {
             return Err(ParamError::new("g", g, "[-0.99, 0.99]"));
         }
         Ok(Self {
@@ -481,7 +485,7 @@ impl<T: LayerInterface, B: Bxdf> Layered<T, B> {
                 if rng.next_f32() < q {
                     break;
                 }
-                beta = beta * (1.0 / (1.0 - q));
+                beta *= 1.0 / (1.0 - q);
             }
             if walk.w.z == 0.0 {
                 break;
@@ -523,7 +527,7 @@ impl<T: LayerInterface, B: Bxdf> Layered<T, B> {
                 let (u, uc) = (rng.next_vec2(), rng.next_f32());
                 match self.top.sample(-walk.w, u, uc) {
                     Some(s) if usable(&s) && s.wi.z < 0.0 => {
-                        beta = beta * weight(&s);
+                        beta *= weight(&s);
                         walk.w = s.wi;
                     }
                     _ => break,

@@ -60,7 +60,7 @@ impl<A: Prepare, B: Prepare<Spectrum = A::Spectrum>> Mix<A, B> {
     /// # Errors
     /// [`ParamError`] naming `weight` for NaN or a value outside `[0, 1]`.
     pub fn new(a: A, b: B, weight: f32) -> Result<Self, ParamError> {
-        if !(weight >= 0.0 && weight <= 1.0) {
+        if !(0.0..=1.0).contains(&weight) {
             return Err(ParamError::new("weight", weight, "[0, 1]"));
         }
         Ok(Self { a, b, weight })

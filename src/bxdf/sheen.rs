@@ -44,7 +44,7 @@ const FIT_1: [f32; 5] = [21.5473, 3.82987, 0.19823, -1.97760, -4.32054];
 ///
 /// **Albedo.** The directional albedo `E(μo) = ∫ f cos θi dωi` (with `c = 1`) is tabulated
 /// at construction (32 angles, evenly spaced in `√μo`, each integrated by Gauss-Legendre
-/// rules: about 50 000 evaluations of `D`, 2 ms) and returned by [`albedo`](Self::albedo), so that a
+/// rules: about 50 000 evaluations of `D`, 0.54 ms in a release build) and returned by [`albedo`](Self::albedo), so that a
 /// renderer can layer the sheen over a base energy-consistently, as OpenPBR and Imageworks
 /// do: `f_sheen + (1 − c E(μo)) f_base`. Measured by `tests/bxdf_sheen.rs` (white, `c = 1`,
 /// 400 000 samples): the albedo is small head-on and grows toward grazing — at `θo = 0°, 60°,
@@ -89,7 +89,7 @@ impl<S: Spectrum> Sheen<S> {
     /// [`ParamError`] naming `color` or `roughness` for NaN or out-of-range values.
     pub fn new(color: S, roughness: f32) -> Result<Self, ParamError> {
         let color = unit_interval("color", color)?;
-        if !(roughness >= R_MIN && roughness <= 1.0) {
+        if !(R_MIN..=1.0).contains(&roughness) {
             return Err(ParamError::new("roughness", roughness, "[0.01, 1]"));
         }
         let t = (1.0 - roughness) * (1.0 - roughness);

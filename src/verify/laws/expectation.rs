@@ -322,8 +322,8 @@ fn measure_direction<B: Bxdf + ?Sized>(
             mass[b].push(f64::from(bxdf.pdf_seeded(wo, w, seed)) * area);
             let f = bxdf.eval_seeded(wo, w, seed);
             let cos = f64::from(w.z.abs()) * area;
-            for c in 0..n {
-                value[b][c].push(f64::from(f.channel(c)) * cos);
+            for (c, v) in value[b].iter_mut().enumerate() {
+                v.push(f64::from(f.channel(c)) * cos);
             }
         }
     }
