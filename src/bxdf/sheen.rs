@@ -63,10 +63,10 @@ const FIT_1: [f32; 5] = [21.5473, 3.82987, 0.19823, -1.97760, -4.32054];
 /// use lobe::bxdf::{Bxdf, Sheen};
 /// use lobe::Vec3;
 /// let velvet = Sheen::new(Vec3::new(0.9, 0.2, 0.3), 0.5)?;
-/// let (wo, wi) = (Vec3::new(0.0, 0.98, 0.2), Vec3::new(0.0, -0.98, 0.2));
-/// let grazing = velvet.eval(wo, wi);
-/// let head_on = velvet.eval(Vec3::Z, Vec3::Z);
-/// assert!(grazing.x > head_on.x); // sheen is strongest at grazing angles
+/// // Sheen is strongest at grazing angles, toward the light (retroreflection).
+/// let grazing = Vec3::new(0.0, 0.98, 0.2);
+/// assert!(velvet.eval(grazing, grazing).x > velvet.eval(Vec3::Z, Vec3::Z).x);
+/// assert!(velvet.albedo(0.2).x > velvet.albedo(1.0).x);
 /// # Ok::<(), lobe::ParamError>(())
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
