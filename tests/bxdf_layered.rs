@@ -17,7 +17,7 @@ use lobe::{Alpha, Eta, Vec2, Vec3, metals};
 
 /// Statistical tests in this file (harness runs count as one each; the closed-form and
 /// furnace comparisons one per configuration).
-const TESTS: usize = 8 + 12 + 18 + 4;
+const TESTS: usize = 8 + 12 + 18 + 4 + 3;
 
 fn ggx(a: f32) -> Ggx {
     Ggx::isotropic(Alpha::new(a).unwrap())
@@ -278,6 +278,45 @@ fn estimates_are_deterministic_and_seeded() {
     let l = Lambert::new(0.5_f32).unwrap();
     assert_eq!(l.eval_seeded(wo, wi, 9), l.eval(wo, wi));
     assert_eq!(l.pdf_seeded(wo, wi, 9), l.pdf(wo, wi));
+}
+
+/// Reciprocity without the seeded variant: an isotropic model's expectation is the same for
+/// every rotation of the pair about the normal, so the plain `eval` averaged over common
+/// random rotations of `(wo, wi)` — each rotation a new pair, hence a new estimate — must
+/// agree with the same average of `eval(wi, wo)` (DESIGN, "Stochastic models").
+#[test]
+fn reciprocity_by_common_rotations_about_the_normal() {
+    let k = common::k_sigma(0.01, TESTS);
+    let m = CoatedDiffuse::coated_diffuse(0.8_f32, ggx(0.2), eta(1.5)).unwrap();
+    let rotate = |w: Vec3, phi: f32| {
+        let (s, c) = phi.sin_cos();
+        Vec3::new(c * w.x - s * w.y, s * w.x + c * w.y, w.z)
+    };
+    let mut rng = lobe::verify::Pcg32::new(21, 4);
+    for (wo, wi) in [
+        (common::dir(20.0, 0.0), common::dir(65.0, 2.5)),
+        (common::dir(70.0, 1.0), common::dir(35.0, 1.2)),
+        (
+            common::dir(50.0, 0.0),
+            common::dir(50.0, core::f32::consts::PI),
+        ),
+    ] {
+        let (mut fwd, mut bwd) = (Accumulator::new(), Accumulator::new());
+        for _ in 0..20_000 {
+            let phi = core::f32::consts::TAU * rng.next_f32();
+            let (a, b) = (rotate(wo, phi), rotate(wi, phi));
+            fwd.push(f64::from(m.eval(a, b)));
+            let phi = core::f32::consts::TAU * rng.next_f32();
+            let (a, b) = (rotate(wo, phi), rotate(wi, phi));
+            bwd.push(f64::from(m.eval(b, a)));
+        }
+        let (f, b) = (fwd.finish(), bwd.finish());
+        eprintln!("rotations: f(wo, wi) {f}, f(wi, wo) {b}");
+        assert!(
+            (f.mean - b.mean).abs() <= k * f.std_err.hypot(b.std_err),
+            "{f} {b}"
+        );
+    }
 }
 
 /// A sample's `pdf` is an independent estimate of the density at its direction: averaged
