@@ -58,9 +58,10 @@ const TAG_SAMPLE: u64 = 0x7361_6d70;
 /// **Estimators.** [`Bxdf::eval`] is pbrt-v4's: `samples` walks from `wo` (each entering by
 /// a sample of the top), each connected to the exit at every event through a direction
 /// sampled from the top at `wi` (next-event estimation) and through the event's own sampled
-/// direction, combined by the power heuristic — with the densities of the two strategies
-/// (pbrt-v4 weighs the second by the top's density from the inside, which is not the density
-/// of the first; here both weights use the same two densities, so the estimator is unbiased),
+/// direction, combined by the power heuristic with the densities of the two strategies over
+/// the same internal direction (pbrt-v4 weighs the second strategy with the top's density of
+/// `wi` given that direction, not the density with which the first draws the direction from
+/// `wi`, so its two weights need not sum to one; here they do, and the estimator is unbiased),
 /// Russian roulette after four events once the throughput is below ¼. [`Bxdf::sample`] walks
 /// from `wo` until the path leaves through the top (pbrt-v4's `Sample_f`, without its Russian
 /// roulette, which would make the density depend on the spectrum): the sample's
