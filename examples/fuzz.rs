@@ -6,7 +6,7 @@
 //!
 //! The argument is the number of random inputs per configuration (default 100,000); each
 //! configuration also runs a fixed grid of corner inputs first. A configuration is one model
-//! with one set of parameters: all 14 models, every distribution and masking term for the
+//! with one set of parameters: every model and combinator, every distribution and masking term for the
 //! microfacet ones, both transport modes for the dielectrics, `f32` and RGB where the model
 //! is generic over its spectrum, with widths at both ends of their range (`α` = 1e-4 and 10,
 //! anisotropic 1e-4 × 10), relative indices `η` = 1, 1 ± 1e-4, 1e±3, 1.5, 1/1.5, and complex
@@ -42,6 +42,7 @@ use lobe::bxdf::{
     Lambert, Microfacet, Mirror, OrenNayar, Phong, Plastic, Prepare, RoughDielectric,
     SmoothDielectric, ThinDielectric, TransportMode,
 };
+use lobe::bxdf::{CoatedDiffuse, DiffuseTransmission, Layered, Mix, Sheen, TwoSided};
 use lobe::fresnel::{Conductor, Dielectric, Fresnel, NoFresnel, Schlick};
 use lobe::microfacet::{
     Beckmann, BeckmannMasking, BlinnPhongNdf, Ggx, Gtr, Masking, NormalDistribution,
@@ -916,7 +917,163 @@ fn configs() -> Vec<Config> {
             BlinnPhongNdf::new(alpha(a)).unwrap(),
         );
     }
+    push_compositions(&mut c);
     c.0
+}
+
+/// The combinators and the layered models (issue 12): widths and indices at their ends, the
+/// layer's thickness and medium at theirs, walks of one event and of many.
+fn push_compositions(c: &mut Configs) {
+    let gold = Conductor {
+        ior: lobe::metals::GOLD.rgb(),
+    };
+    let rgb = Vec3::new(1.0, 0.5, 0.0);
+    // Rough coats over a white base, every index, the widths' ends.
+    for (ax, ay) in [(1e-4, 1e-4), (10.0, 10.0), (1e-4, 10.0), (0.3, 0.3)] {
+        for e in ETAS {
+            let top = RoughDielectric::new(Ggx::new(alpha(ax), alpha(ay)), eta(e));
+            c.push(
+                "Layered<RoughDielectric, Lambert>",
+                format!("α ({ax:e}, {ay:e}), η {e:e}, ρ 1 f32"),
+                Some(eta(e)),
+                Layered::new(top, Lambert::new(1.0f32).unwrap()),
+            );
+        }
+    }
+    // Rough conductors under a coat, the extreme conductor too, RGB.
+    for e in [1.5, 1e-3, 1e3] {
+        let top = RoughDielectric::new(Beckmann::isotropic(alpha(0.2)), eta(e));
+        for (what, cond) in [("gold", gold), ("extreme", extreme_conductor())] {
+            let base =
+                Microfacet::new(Ggx::isotropic(alpha(0.05)), Masking::HeightCorrelated, cond);
+            c.push(
+                "Layered<RoughDielectric, Microfacet> (coated conductor)",
+                format!("Beckmann α 0.2, η {e:e}, {what} GGX α 0.05 RGB"),
+                Some(eta(e)),
+                Layered::new(top, base),
+            );
+        }
+    }
+    // Smooth coats, every index, RGB base.
+    for e in ETAS {
+        c.push(
+            "Layered<SmoothDielectric, Lambert>",
+            format!("η {e:e}, ρ (1, 0.5, 0) RGB, no layer"),
+            Some(eta(e)),
+            Layered::new(SmoothDielectric::new(eta(e)), Lambert::new(rgb).unwrap())
+                .with_thickness(0.0)
+                .unwrap(),
+        );
+    }
+    // The layer's ends: thick and scattering, forward and backward, walks of 1 and 256
+    // events, several walks per estimate.
+    let coated =
+        |r: f32| CoatedDiffuse::coated_diffuse(rgb, Ggx::isotropic(alpha(r)), eta(1.5)).unwrap();
+    for (what, m) in [
+        (
+            "thickness 1e3, albedo 1, g 0.99",
+            coated(0.3)
+                .with_thickness(1e3)
+                .unwrap()
+                .with_medium(Vec3::ONE, 0.99)
+                .unwrap(),
+        ),
+        (
+            "thickness 1, albedo 1, g −0.99",
+            coated(0.3)
+                .with_thickness(1.0)
+                .unwrap()
+                .with_medium(Vec3::ONE, -0.99)
+                .unwrap(),
+        ),
+        (
+            "thickness 0, albedo (1, 0.5, 0), g 0",
+            coated(1e-4)
+                .with_thickness(0.0)
+                .unwrap()
+                .with_medium(rgb, 0.0)
+                .unwrap(),
+        ),
+        ("max depth 1", coated(10.0).with_max_depth(1).unwrap()),
+        (
+            "max depth 256, 4 walks",
+            coated(0.3)
+                .with_max_depth(256)
+                .unwrap()
+                .with_samples(4)
+                .unwrap(),
+        ),
+    ] {
+        c.push(
+            "CoatedDiffuse<Ggx, Vec3>",
+            what.to_owned(),
+            Some(eta(1.5)),
+            m,
+        );
+    }
+    // Blends: a weight at each end and between, exact and stochastic parts, a delta part.
+    for w in [0.0, 0.5, 1.0] {
+        let gloss = Microfacet::new(Ggx::new(alpha(1e-4), alpha(10.0)), Masking::VCavity, gold);
+        c.push(
+            "Mix",
+            format!("Lambert RGB + GGX gold α (1e-4, 10), w {w}"),
+            None,
+            Mix::new(Lambert::new(rgb).unwrap(), gloss, w).unwrap(),
+        );
+        c.push(
+            "Mix",
+            format!("Mirror gold + Lambert RGB, w {w}"),
+            None,
+            Mix::new(Mirror::new(gold), Lambert::new(rgb).unwrap(), w).unwrap(),
+        );
+        c.push(
+            "Mix",
+            format!("CoatedDiffuse + Lambert RGB, w {w}"),
+            Some(eta(1.5)),
+            Mix::new(coated(0.3), Lambert::new(rgb).unwrap(), w).unwrap(),
+        );
+    }
+    // Two-sided: a glossy model, a layered one.
+    c.push(
+        "TwoSided",
+        "GGX extreme conductor α 1e-4".to_owned(),
+        None,
+        TwoSided::new(Microfacet::new(
+            Ggx::isotropic(alpha(1e-4)),
+            Masking::HeightCorrelated,
+            extreme_conductor(),
+        )),
+    );
+    c.push(
+        "TwoSided",
+        "CoatedDiffuse α 0.3".to_owned(),
+        Some(eta(1.5)),
+        TwoSided::new(coated(0.3)),
+    );
+    // Diffuse transmission at the ends of R + T ≤ 1.
+    for (r, t) in [(0.0f32, 0.0f32), (1.0, 0.0), (0.0, 1.0), (0.5, 0.5)] {
+        c.push(
+            "DiffuseTransmission",
+            format!("R {r}, T {t} f32"),
+            None,
+            DiffuseTransmission::new(r, t).unwrap(),
+        );
+    }
+    c.push(
+        "DiffuseTransmission",
+        "R (1, 0.5, 0), T (0, 0.5, 1) RGB".to_owned(),
+        None,
+        DiffuseTransmission::new(rgb, Vec3::new(0.0, 0.5, 1.0)).unwrap(),
+    );
+    // Sheen at the ends of its roughness.
+    for r in [0.01f32, 0.3, 1.0] {
+        c.push(
+            "Sheen",
+            format!("r {r}, colour (1, 0.5, 0) RGB"),
+            None,
+            Sheen::new(rgb, r).unwrap(),
+        );
+    }
 }
 
 // ---------------------------------------------------------------------------------------

@@ -12,6 +12,9 @@ use lobe::bxdf::{
     Microfacet, Mirror, OrenNayar, Phong, Plastic, RoughDielectric, SmoothDielectric,
     ThinDielectric, TransportMode,
 };
+use lobe::bxdf::{
+    CoatedConductor, CoatedDiffuse, DiffuseTransmission, Layered, Mix, Sheen, TwoSided,
+};
 use lobe::fresnel::{Conductor, Dielectric, NoFresnel, Schlick};
 use lobe::microfacet::{Beckmann, BeckmannMasking, BlinnPhongNdf, Ggx, Gtr, Masking};
 use lobe::verify::strategies::{
@@ -20,7 +23,7 @@ use lobe::verify::strategies::{
 use lobe::{Alpha, ComplexIor, Eta, Roughness, Vec2, Vec3};
 use proptest::prelude::*;
 
-const MODELS: u8 = 20;
+const MODELS: u8 = 27;
 
 /// Model `kind` built from the random parameters.
 fn model(
@@ -90,6 +93,42 @@ fn model(
         16 => Box::new(ThinDielectric::new(eta)),
         17 => Box::new(Glazed::new(t, eta).unwrap()),
         18 => Box::new(Plastic::new(t, Ggx::new(a, b), eta).unwrap()),
+        20 => Box::new(CoatedDiffuse::coated_diffuse(t, Ggx::new(a, b), eta).unwrap()),
+        21 => match CoatedConductor::coated_conductor(
+            Ggx::new(a, b),
+            eta,
+            Beckmann::new(small, small),
+            ior,
+        ) {
+            Ok(m) => Box::new(m),
+            // ior / η out of range: the metal against the coat as given.
+            Err(_) => Box::new(Layered::new(
+                RoughDielectric::new(Ggx::new(a, b), eta),
+                Microfacet::new(Beckmann::new(small, small), masking, Conductor { ior }),
+            )),
+        },
+        22 => Box::new(
+            Layered::new(SmoothDielectric::new(eta), Lambert::new(t).unwrap())
+                .with_thickness(10.0 * t)
+                .unwrap()
+                .with_medium(t, (2.0 * t - 1.0).clamp(-0.99, 0.99))
+                .unwrap(),
+        ),
+        23 => Box::new(
+            Mix::new(
+                Lambert::new(t).unwrap(),
+                Microfacet::new(Ggx::new(a, b), masking, Conductor { ior }),
+                t,
+            )
+            .unwrap(),
+        ),
+        24 => Box::new(TwoSided::new(Microfacet::new(
+            Beckmann::new(a, b),
+            masking,
+            NoFresnel::<f32>::new(),
+        ))),
+        25 => Box::new(DiffuseTransmission::new(0.5 * t, 0.5 * (1.0 - t)).unwrap()),
+        26 => Box::new(Sheen::new(t, t.max(0.01)).unwrap()),
         _ => Box::new(Microfacet::new(
             Ggx::new(a, b).with_bounded_reflection(false),
             masking,

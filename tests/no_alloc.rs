@@ -423,6 +423,80 @@ fn coated_models_do_not_allocate() {
     }
 }
 
+/// The seeded calls of a stochastic model, counted like [`assert_no_alloc`]'s.
+fn assert_seeded_no_alloc<M: Prepare>(name: &str, model: &M, i: &Inputs) {
+    let (checksum, calls) = count_calls(|| {
+        let mut sum = 0.0f32;
+        for k in 0..N {
+            let (wo, wi) = (i.wo[k], i.wi[k]);
+            sum += lobe::bxdf::Bxdf::eval_seeded(model, wo, wi, k as u64).average();
+            sum += lobe::bxdf::Bxdf::pdf_seeded(model, wo, wi, k as u64);
+        }
+        black_box(sum)
+    });
+    assert_eq!(
+        calls, 0,
+        "{name}: {calls} allocator calls over {N} seeded inputs (checksum {checksum})"
+    );
+}
+
+/// The combinators and the stochastic layered models (issue 12): the random walk lives on
+/// the stack (its generator is eight bytes), and so do the blends' prepared states.
+#[test]
+fn composed_models_do_not_allocate() {
+    use lobe::bxdf::{
+        CoatedConductor, CoatedDiffuse, DiffuseTransmission, Layered, Mix, Sheen, TwoSided,
+    };
+    let i = inputs();
+    let rgb = Vec3::new(0.8, 0.5, 0.2);
+    for e in [eta(1.5), eta(1e3)] {
+        let coated = CoatedDiffuse::coated_diffuse(rgb, Ggx::isotropic(alpha(0.3)), e).unwrap();
+        assert_no_alloc("CoatedDiffuse", &coated, &i);
+        assert_seeded_no_alloc("CoatedDiffuse", &coated, &i);
+        let scattering = coated
+            .with_thickness(0.5)
+            .unwrap()
+            .with_medium(rgb, 0.3)
+            .unwrap()
+            .with_samples(4)
+            .unwrap();
+        assert_no_alloc("CoatedDiffuse with a medium", &scattering, &i);
+        assert_seeded_no_alloc("CoatedDiffuse with a medium", &scattering, &i);
+        let conductor = CoatedConductor::coated_conductor(
+            Ggx::isotropic(alpha(0.1)),
+            e,
+            Beckmann::isotropic(alpha(0.3)),
+            gold(),
+        )
+        .unwrap();
+        assert_no_alloc("CoatedConductor", &conductor, &i);
+        let smooth = Layered::new(SmoothDielectric::new(e), Lambert::new(0.5f32).unwrap());
+        assert_no_alloc("smooth coat", &smooth, &i);
+        assert_seeded_no_alloc("smooth coat", &smooth, &i);
+        assert_no_alloc("TwoSided(CoatedDiffuse)", &TwoSided::new(coated), &i);
+        let mix = Mix::new(coated, Lambert::new(rgb).unwrap(), 0.4).unwrap();
+        assert_no_alloc("Mix(CoatedDiffuse, Lambert)", &mix, &i);
+        assert_seeded_no_alloc("Mix(CoatedDiffuse, Lambert)", &mix, &i);
+    }
+    let gloss = Microfacet::new(
+        Ggx::isotropic(alpha(0.2)),
+        Masking::HeightCorrelated,
+        Conductor { ior: gold() },
+    );
+    assert_no_alloc(
+        "Mix(Lambert, GGX)",
+        &Mix::new(Lambert::new(rgb).unwrap(), gloss, 0.5).unwrap(),
+        &i,
+    );
+    assert_no_alloc("TwoSided(GGX)", &TwoSided::new(gloss), &i);
+    assert_no_alloc(
+        "DiffuseTransmission",
+        &DiffuseTransmission::new(rgb * 0.5, rgb * 0.5).unwrap(),
+        &i,
+    );
+    assert_no_alloc("Sheen", &Sheen::new(rgb, 0.3).unwrap(), &i);
+}
+
 /// The batched calls (`lobe::batch`) of the three models the issue names, RGB and mono,
 /// including their run-time dispatch to the widest SIMD the CPU has: no allocation either.
 #[test]

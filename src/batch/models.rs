@@ -5,6 +5,7 @@ use crate::bxdf::{
     BlinnPhong, DisneyDiffuse, EnergyPreservingOrenNayar, Glazed, Lambert, Microfacet, Mirror,
     Mono, OrenNayar, Phong, Plastic, RoughDielectric, SmoothDielectric, ThinDielectric,
 };
+use crate::bxdf::{Bxdf, DiffuseTransmission, LayerInterface, Layered, Mix, Sheen, TwoSided};
 use crate::fresnel::Fresnel;
 use crate::microfacet::NormalDistribution;
 use crate::spectrum::Spectrum;
@@ -27,6 +28,17 @@ impl<F: Fresnel> Batch for Mirror<F> where F::Spectrum: Lanes {}
 impl Batch for SmoothDielectric {}
 impl<B: Prepare<Spectrum = f32>, S: Spectrum + Lanes> Batch for Mono<B, S> {}
 impl Batch for ThinDielectric {}
+impl<A, B> Batch for Mix<A, B>
+where
+    A: Prepare,
+    B: Prepare<Spectrum = A::Spectrum>,
+    A::Spectrum: Lanes,
+{
+}
+impl<B: Prepare> Batch for TwoSided<B> where B::Spectrum: Lanes {}
+impl<S: Spectrum + Lanes> Batch for DiffuseTransmission<S> {}
+impl<S: Spectrum + Lanes> Batch for Sheen<S> {}
+impl<T: LayerInterface, B: Bxdf> Batch for Layered<T, B> where B::Spectrum: Lanes {}
 /// A model whose value depends on a masking term chosen at run time: the batched loops fix
 /// it at compile time, so that the loop does not branch on it.
 trait Masked: Prepare {

@@ -111,39 +111,57 @@ macro_rules! delta_model {
 }
 
 mod blinn_phong;
+mod coated_conductor;
+mod coated_diffuse;
 mod compensated;
 mod compensated_dielectric;
 mod diffuse_glossy;
+mod diffuse_transmission;
 mod disney_diffuse;
 mod eon;
 mod glazed;
+mod henyey_greenstein;
 mod lambert;
+mod layer_interface;
+mod layered;
 mod microfacet;
 mod mirror;
+mod mix;
 mod mono;
 mod oren_nayar;
 mod phong;
 mod plastic;
 mod rough_dielectric;
+mod sheen;
 mod smooth_dielectric;
 mod thin_dielectric;
+mod two_sided;
+mod walk_rng;
 
 pub use blinn_phong::{BlinnPhong, BlinnPhongForm};
+pub use coated_conductor::CoatedConductor;
+pub use coated_diffuse::CoatedDiffuse;
 pub use compensated::{CompensatedMicrofacet, CompensatedState, Compensation};
 pub use compensated_dielectric::CompensatedDielectric;
+pub use diffuse_transmission::DiffuseTransmission;
 pub use disney_diffuse::DisneyDiffuse;
 pub use eon::EnergyPreservingOrenNayar;
 pub use glazed::Glazed;
 pub use lambert::Lambert;
+pub use layer_interface::LayerInterface;
+pub use layered::Layered;
 pub use microfacet::{Microfacet, RoughConductor};
 pub use mirror::Mirror;
+pub use mix::Mix;
 pub use mono::Mono;
 pub use oren_nayar::OrenNayar;
 pub use phong::Phong;
 pub use plastic::{CompensatedPlastic, Plastic, PlasticState};
 pub use rough_dielectric::RoughDielectric;
+pub use sheen::Sheen;
 pub use smooth_dielectric::SmoothDielectric;
 pub use thin_dielectric::ThinDielectric;
+pub use two_sided::TwoSided;
 
 use crate::spectrum::Spectrum;
 use core::fmt;
@@ -372,6 +390,52 @@ pub trait Bxdf {
     /// The kinds of lobe the model has.
     #[must_use]
     fn lobes(&self) -> Lobes;
+
+    /// True when the model's `eval` and `pdf` are Monte Carlo estimates (a stochastic layered
+    /// BSDF, [`Layered`]; a combinator of one), false (the default) when they are exact.
+    ///
+    /// A stochastic model is deterministic for given inputs — its estimators draw from a
+    /// generator seeded with a hash of the arguments —, so two calls with the same arguments
+    /// agree; [`eval_seeded`](Self::eval_seeded) and [`pdf_seeded`](Self::pdf_seeded) give
+    /// independent estimates, one per seed, whose expectation is the BSDF's value and
+    /// density. Its laws hold in expectation, and
+    /// [`verify::check_bxdf`](crate::verify::check_bxdf) checks them so when this says so.
+    /// For such a model a [`BxdfSample`]'s [`weight`](BxdfSample::weight) is the random walk's
+    /// unbiased weight, its `pdf` an independent estimate of the density at its direction
+    /// (the kind of number [`pdf`](Self::pdf) returns, for multiple importance sampling) and
+    /// its `f` the value that makes `f |cos θi| / pdf` that weight; so MIS code written for
+    /// exact models works unchanged (pbrt-v4 returns the path's density instead and flags it
+    /// `pdfIsProportional`, leaving the renderer to call `pdf`).
+    ///
+    /// A provided method: an exact model, the crate's or a user's, need not mention it.
+    #[inline(always)]
+    #[must_use]
+    fn stochastic(&self) -> bool {
+        false
+    }
+
+    /// [`eval`](Self::eval) as the estimate numbered `seed`: for a
+    /// [`stochastic`](Self::stochastic) model, estimates with different seeds are independent
+    /// and share the expectation `f(wo, wi)` (the crate's models: `eval(wo, wi)` is
+    /// `eval_seeded(wo, wi, 0)`). The default, for an exact model, ignores the seed and
+    /// returns `eval(wo, wi)`.
+    #[inline(always)]
+    #[must_use]
+    fn eval_seeded(&self, wo: Vec3, wi: Vec3, seed: u64) -> Self::Spectrum {
+        let _ = seed;
+        self.eval(wo, wi)
+    }
+
+    /// [`pdf`](Self::pdf) as the estimate numbered `seed`, like
+    /// [`eval_seeded`](Self::eval_seeded): independent estimates of the density of
+    /// [`sample`](Self::sample)'s directions for a stochastic model, `pdf(wo, wi)` itself
+    /// (the default) for an exact one.
+    #[inline(always)]
+    #[must_use]
+    fn pdf_seeded(&self, wo: Vec3, wi: Vec3, seed: u64) -> f32 {
+        let _ = seed;
+        self.pdf(wo, wi)
+    }
 }
 
 /// A BSDF that does the work depending on `wo` alone once per shading point.
@@ -449,6 +513,29 @@ pub trait Prepare {
     /// [`Bxdf::lobes`].
     #[must_use]
     fn lobes(&self) -> Lobes;
+
+    /// [`Bxdf::stochastic`]: false (the default) for an exact model.
+    #[inline(always)]
+    #[must_use]
+    fn stochastic(&self) -> bool {
+        false
+    }
+
+    /// [`Bxdf::eval_seeded`] for the prepared `wo`; the default ignores the seed.
+    #[inline(always)]
+    #[must_use]
+    fn eval_seeded_prepared(&self, at: &Self::Prepared, wi: Vec3, seed: u64) -> Self::Spectrum {
+        let _ = seed;
+        self.eval_prepared(at, wi)
+    }
+
+    /// [`Bxdf::pdf_seeded`] for the prepared `wo`; the default ignores the seed.
+    #[inline(always)]
+    #[must_use]
+    fn pdf_seeded_prepared(&self, at: &Self::Prepared, wi: Vec3, seed: u64) -> f32 {
+        let _ = seed;
+        self.pdf_prepared(at, wi)
+    }
 }
 
 /// The preconditions of a hot-loop call, checked in debug builds (like glam's
@@ -493,6 +580,23 @@ impl<T: Prepare> Bxdf for T {
     #[inline(always)]
     fn lobes(&self) -> Lobes {
         Prepare::lobes(self)
+    }
+
+    #[inline(always)]
+    fn stochastic(&self) -> bool {
+        Prepare::stochastic(self)
+    }
+
+    #[inline(always)]
+    fn eval_seeded(&self, wo: Vec3, wi: Vec3, seed: u64) -> T::Spectrum {
+        debug_check(&[wo, wi], &[]);
+        self.eval_seeded_prepared(&self.prepare(wo), wi, seed)
+    }
+
+    #[inline(always)]
+    fn pdf_seeded(&self, wo: Vec3, wi: Vec3, seed: u64) -> f32 {
+        debug_check(&[wo, wi], &[]);
+        self.pdf_seeded_prepared(&self.prepare(wo), wi, seed)
     }
 }
 

@@ -86,4 +86,19 @@ impl<B: Prepare<Spectrum = f32>, S: Spectrum> Prepare for Mono<B, S> {
     fn lobes(&self) -> Lobes {
         self.inner.lobes()
     }
+
+    #[inline(always)]
+    fn stochastic(&self) -> bool {
+        self.inner.stochastic()
+    }
+
+    #[inline(always)]
+    fn eval_seeded_prepared(&self, at: &B::Prepared, wi: Vec3, seed: u64) -> S {
+        S::splat(self.inner.eval_seeded_prepared(at, wi, seed))
+    }
+
+    #[inline(always)]
+    fn pdf_seeded_prepared(&self, at: &B::Prepared, wi: Vec3, seed: u64) -> f32 {
+        self.inner.pdf_seeded_prepared(at, wi, seed)
+    }
 }

@@ -18,6 +18,12 @@
 //!   [`Spectrum`](crate::Spectrum) — `f32`, RGB `Vec3`, four wavelengths `Vec4` — is checked
 //!   per channel, each report naming its worst channel; [`Channel`] views one channel as a
 //!   monochrome model for the measurements.
+//! * A [`stochastic`](crate::bxdf::Bxdf::stochastic) model (a layered BSDF, whose `eval` and
+//!   `pdf` are Monte Carlo estimates) is checked in expectation: [`check_bxdf`] hands it to
+//!   [`check_bxdf_in_expectation`], which averages independent seeded estimates and compares
+//!   with their standard errors ([`reciprocity_in_expectation`], [`sampling_in_expectation`]
+//!   against the expected density, [`consistency_in_expectation`] of the sampled weight with
+//!   the expected value).
 //! * [`check_ndf`] runs the laws of a microfacet distribution: [`d_normalization`],
 //!   [`projected_area`], [`visible_normalization`] and its sampler ([`chi2_normals`]).
 //! * One [`Config`] sets every check's budget, seed, significance, viewer directions and
@@ -127,6 +133,11 @@ pub use laws::{
     albedo, albedo_cosine, albedo_sampled, check_bxdf, check_ndf, chi2_bxdf, chi2_normals,
     consistency, d_normalization, energy_bound, positivity, projected_area, projected_area_masked,
     reciprocity, reciprocity_pair, sample_consistency, sampling_chi2, visible_normalization,
+};
+pub use laws::{
+    ExpectedPair, check_bxdf_in_expectation, consistency_in_expectation,
+    reciprocity_in_expectation, reciprocity_pair_in_expectation,
+    sampling_and_consistency_in_expectation, sampling_in_expectation,
 };
 pub use stats::{
     Accumulator, Chi2Bin, Chi2Config, Chi2Report, Chi2Residual, Estimate, Pcg32, chi2_sphere,

@@ -1,4 +1,4 @@
-//! The default scene: one sphere per model in a 5 × 3 grid on a checkered floor, lit by a
+//! The default scene: one sphere per model in a 5 × 4 grid on a checkered floor, lit by a
 //! quad area light and a sky.
 
 use crate::camera::Camera;
@@ -13,6 +13,7 @@ use lobe::bxdf::{
     Microfacet, Mirror, OrenNayar, Phong, Plastic, RoughDielectric, SmoothDielectric,
     ThinDielectric,
 };
+use lobe::bxdf::{CoatedConductor, CoatedDiffuse, DiffuseTransmission, Sheen};
 use lobe::fresnel::Conductor;
 use lobe::metals;
 use lobe::microfacet::{Beckmann, Ggx, Masking};
@@ -21,10 +22,10 @@ use lobe::{Alpha, Eta, ParamError, Roughness, Vec3};
 /// Grid columns.
 pub const COLUMNS: usize = 5;
 /// The row names, back to front as the camera sees them.
-pub const ROWS: [&str; 3] = ["back", "middle", "front"];
+pub const ROWS: [&str; 4] = ["back", "middle", "front", "nearest"];
 
 /// The `lobe` type behind each sphere, in the order of [`materials`].
-pub const TYPES: [&str; 15] = [
+pub const TYPES: [&str; 19] = [
     "Lambert<Vec3>",
     "OrenNayar<Vec3>",
     "EnergyPreservingOrenNayar<Vec3>",
@@ -40,12 +41,16 @@ pub const TYPES: [&str; 15] = [
     "SmoothDielectric (f32, lifted to RGB by Mono)",
     "RoughDielectric<Ggx> (f32, lifted to RGB by Mono)",
     "ThinDielectric (f32, lifted to RGB by Mono)",
+    "CoatedDiffuse<Ggx, Vec3> (stochastic layered)",
+    "CoatedConductor<Ggx, Ggx, Vec3> (stochastic layered)",
+    "Sheen<Vec3>",
+    "DiffuseTransmission<Vec3>",
 ];
 
 /// The common reflectance of the diffuse models, so that they compare.
 const CLAY: Vec3 = Vec3::new(0.80, 0.42, 0.28);
 
-/// The 15 materials, back row first, left to right.
+/// The 19 materials, back row first, left to right.
 ///
 /// # Errors
 /// A [`ParamError`] if a model refuses its parameters (it does not, for these).
@@ -127,6 +132,20 @@ pub fn materials() -> Result<Vec<Material>, ParamError> {
             Mono::new(ThinDielectric::new(glass)),
         )
         .with_interface(Interface::Thin(ThinDielectric::new(glass))),
+        // Composition and layering (issue 12): the nearest row.
+        Material::new(
+            "coated diffuse GGX α=0.1",
+            CoatedDiffuse::coated_diffuse(Vec3::new(0.55, 0.08, 0.06), ggx(0.1)?, glass)?,
+        ),
+        Material::new(
+            "coated copper, coat α=0.05, metal α=0.3",
+            CoatedConductor::coated_conductor(ggx(0.05)?, glass, ggx(0.3)?, copper)?,
+        ),
+        Material::new("sheen r=0.4", Sheen::new(Vec3::new(0.9, 0.35, 0.6), 0.4)?),
+        Material::new(
+            "diffuse transmission (leaf)",
+            DiffuseTransmission::new(Vec3::new(0.25, 0.45, 0.1), Vec3::new(0.3, 0.5, 0.1))?,
+        ),
     ])
 }
 
@@ -204,7 +223,7 @@ fn checkered_floor(b: &mut SceneBuilder) -> Result<(), ParamError> {
 pub fn layout_markdown(layout: &[Vec<String>]) -> String {
     let mut s = String::from(
         "# The default scene\n\n`cargo run --release --example raytracer` renders one sphere per \
-         `lobe` model in a 5 × 3 grid on a checkered floor, lit by a quad area light (upper \
+         `lobe` model in a 5 × 4 grid on a checkered floor, lit by a quad area light (upper \
          left) and a sky. As seen in `render.png`:\n\n\
          | row | 1 (left) | 2 | 3 | 4 | 5 (right) |\n\
          | --- | --- | --- | --- | --- | --- |\n",

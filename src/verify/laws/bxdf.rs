@@ -122,10 +122,22 @@ impl<B: Bxdf + ?Sized> Bxdf for Channel<'_, B> {
     fn lobes(&self) -> Lobes {
         self.bxdf.lobes()
     }
+
+    fn stochastic(&self) -> bool {
+        self.bxdf.stochastic()
+    }
+
+    fn eval_seeded(&self, wo: Vec3, wi: Vec3, seed: u64) -> f32 {
+        self.bxdf.eval_seeded(wo, wi, seed).channel(self.index)
+    }
+
+    fn pdf_seeded(&self, wo: Vec3, wi: Vec3, seed: u64) -> f32 {
+        self.bxdf.pdf_seeded(wo, wi, seed)
+    }
 }
 
 /// The number of channels of `bxdf`'s spectrum.
-fn channels<B: Bxdf + ?Sized>(_: &B) -> usize {
+pub(super) fn channels<B: Bxdf + ?Sized>(_: &B) -> usize {
     B::Spectrum::CHANNELS
 }
 
@@ -143,7 +155,7 @@ fn channel_name(i: usize, n: usize) -> String {
 /// figure (NaN the largest), then the first. With more than one channel its detail names the
 /// channel ("blue channel (worst of 3): …", "… (worst of 3, tied with 2 others)" when other
 /// channels measured the same). Every figure of a BSDF law is worse the larger it is.
-fn worst_channel(mut reports: Vec<LawReport>) -> LawReport {
+pub(super) fn worst_channel(mut reports: Vec<LawReport>) -> LawReport {
     let n = reports.len();
     if n == 1 {
         return reports.swap_remove(0);
@@ -241,8 +253,8 @@ fn albedo_sampled_channels<B: Bxdf + ?Sized>(bxdf: &B, wo: Vec3, config: &Config
 }
 
 /// The directional albedo estimated independently of the model's sampler: `wi` cosine-
-/// distributed over the upper hemisphere, and also over the lower one (each with probability
-/// ½) when the model transmits; `config.albedo_samples` samples drawn with `config.seed`.
+/// distributed over `wo`'s hemisphere, and over both (each with probability ½) when the model
+/// transmits; `config.albedo_samples` samples drawn with `config.seed`.
 /// Misses delta lobes, which have no density.
 ///
 /// `config` is a `&`[`Config`] (or the older `&`[`BxdfCheck`](super::BxdfCheck)).
@@ -268,6 +280,9 @@ fn albedo_cosine_channels<B: Bxdf + ?Sized>(bxdf: &B, wo: Vec3, config: &Config)
             if rng.next_f32() < 0.5 {
                 wi.z = -wi.z;
             }
+        } else if wo.z < 0.0 {
+            // A reflection model seen from below (a two-sided one) reflects below.
+            wi.z = -wi.z;
         }
         if pdf > 0.0 {
             let cos = f64::from(wi.z.abs());
@@ -856,7 +871,10 @@ pub fn consistency<B: Bxdf + ?Sized>(bxdf: &B, config: &Config) -> LawReport {
 
 /// Runs every law that applies to `bxdf`: positivity, the energy bound, and — for a model with
 /// a lobe that has a density — reciprocity, sampling and consistency; the agreement of the two
-/// albedo estimators for a model without delta lobes. A model of any [`Spectrum`] — `f32`,
+/// albedo estimators for a model without delta lobes. For a [`stochastic`](Bxdf::stochastic)
+/// model (a layered BSDF, whose `eval` and `pdf` are Monte Carlo estimates) reciprocity,
+/// sampling and consistency are checked in expectation instead
+/// ([`check_bxdf_in_expectation`](super::check_bxdf_in_expectation)). A model of any [`Spectrum`] — `f32`,
 /// RGB [`Vec3`], four wavelengths [`Vec4`](glam::Vec4) — is checked per channel, and each
 /// report is its worst channel's.
 ///
@@ -874,6 +892,9 @@ pub fn consistency<B: Bxdf + ?Sized>(bxdf: &B, config: &Config) -> LawReport {
 /// ```
 #[must_use]
 pub fn check_bxdf<B: Bxdf + ?Sized>(name: &str, bxdf: &B, config: &Config) -> Report {
+    if bxdf.stochastic() {
+        return super::expectation::check_bxdf_in_expectation(name, bxdf, config);
+    }
     let mut laws = Vec::new();
     laws.push(positivity(bxdf, config));
     // A model made only of delta lobes has `eval = 0` everywhere: nothing to compare.

@@ -65,6 +65,13 @@ pub struct Config {
     /// chi-square test: about the distribution's widths `(αx, αy)`, so that a narrow lobe is
     /// sampled at its own scale. Default `(1, 1)`.
     pub stretch: Vec2,
+    /// For a [`stochastic`](crate::bxdf::Bxdf::stochastic) model (laws in expectation): the
+    /// independent estimates averaged per value — each side of a reciprocity pair — and, sixteen
+    /// times as many, per bin of the expected density and value. Default 64.
+    pub expectation_evaluations: usize,
+    /// For a stochastic model: the direction pairs of reciprocity in expectation.
+    /// Default 200.
+    pub expectation_pairs: usize,
 }
 
 impl Default for Config {
@@ -83,6 +90,8 @@ impl Default for Config {
             reciprocity_tolerance: 1e-5,
             consistency_tolerance: 1e-4,
             stretch: Vec2::ONE,
+            expectation_evaluations: 64,
+            expectation_pairs: 200,
         }
     }
 }

@@ -3,7 +3,9 @@
 //!
 //! What lives here: `bxdf.rs`, the laws of a BSDF of any spectrum (positivity, reciprocity,
 //! the energy bound by two albedo estimators, sampling, consistency), [`check_bxdf`], and
-//! [`Channel`]; `distribution.rs`, the laws of a microfacet distribution (`D` normalisation,
+//! [`Channel`]; `expectation.rs`, the laws of a stochastic BSDF checked in expectation
+//! (reciprocity, sampling against the expected density, the sampled weight against the
+//! expected value) and [`check_bxdf_in_expectation`], which `check_bxdf` calls for one; `distribution.rs`, the laws of a microfacet distribution (`D` normalisation,
 //! projected area, visible normals, sampling) and [`check_ndf`]; and what the two share: the
 //! one configuration ([`Config`], with the older [`BxdfCheck`] that converts into it,
 //! `config.rs`) and the reports ([`Law`], [`LawReport`], [`Report`], `report.rs`).
@@ -14,6 +16,7 @@
 mod bxdf;
 mod config;
 mod distribution;
+mod expectation;
 mod report;
 
 pub use bxdf::{
@@ -25,5 +28,10 @@ pub use config::{BxdfCheck, Config};
 pub use distribution::{
     check_ndf, chi2_normals, d_normalization, projected_area, projected_area_masked,
     visible_normalization,
+};
+pub use expectation::{
+    ExpectedPair, check_bxdf_in_expectation, consistency_in_expectation,
+    reciprocity_in_expectation, reciprocity_pair_in_expectation,
+    sampling_and_consistency_in_expectation, sampling_in_expectation,
 };
 pub use report::{Law, LawReport, Report};

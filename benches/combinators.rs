@@ -1,0 +1,179 @@
+//! Criterion benchmarks of the combinators and the stochastic layered models (issue 12), on
+//! the fixed 4,096 inputs of `benches/inputs.rs`:
+//!
+//! * `eval`, `pdf` and `sample` of `Mix` (Lambert and a GGX conductor), `TwoSided` (the GGX
+//!   conductor, viewed from below for half the inputs), `DiffuseTransmission` (sides mixed),
+//!   and the Charlie `Sheen`, all RGB, with the parts alone for comparison;
+//! * `eval`, `pdf` and `sample` of `CoatedDiffuse` (GGX `α = 0.3`, `η = 1.5`) and
+//!   `CoatedConductor` (coat GGX `α = 0.1`, gold GGX `α = 0.3`) at the default sample count
+//!   (one walk per `eval` and `pdf`), and `CoatedDiffuse` with four walks, and with a
+//!   scattering layer; the construction of a `Sheen` (its albedo table).
+//!
+//! ```sh
+//! cargo bench --bench combinators
+//! ```
+//!
+//! As in `benches/shading.rs`: one pass over the 4,096 inputs per iteration, reported with
+//! `Throughput::Elements(4096)` (time per call = criterion's time / 4,096), results through
+//! `black_box`, short measurement windows.
+
+mod inputs;
+
+use criterion::{BenchmarkGroup, Criterion, Throughput, criterion_group, criterion_main};
+use inputs::{Inputs, N, inputs};
+use lobe::bxdf::{
+    Bxdf, CoatedConductor, CoatedDiffuse, DiffuseTransmission, Lambert, Microfacet, Mix, Sheen,
+    TwoSided,
+};
+use lobe::fresnel::Conductor;
+use lobe::microfacet::{Ggx, Masking};
+use lobe::{Alpha, Eta, Vec3, metals};
+use std::hint::black_box;
+use std::time::Duration;
+
+fn group<'a>(
+    c: &'a mut Criterion,
+    name: &str,
+) -> BenchmarkGroup<'a, criterion::measurement::WallTime> {
+    let mut g = c.benchmark_group(name);
+    g.throughput(Throughput::Elements(N as u64));
+    g
+}
+
+/// The inputs with the sides mixed: `wi` below the surface for odd `k`, `wo` below for
+/// `k mod 4 ≥ 2`.
+fn two_sided(i: &Inputs) -> Inputs {
+    let flip = |w: Vec3, below: bool| if below { Vec3::new(w.x, w.y, -w.z) } else { w };
+    Inputs {
+        wo: (0..N).map(|k| flip(i.wo[k], k % 4 >= 2)).collect(),
+        wi: (0..N).map(|k| flip(i.wi[k], k % 2 == 1)).collect(),
+        u: i.u.clone(),
+        uc: i.uc.clone(),
+    }
+}
+
+/// The inputs seen from below for `k mod 4 ≥ 2` (both directions mirrored).
+fn mirrored(i: &Inputs) -> Inputs {
+    let flip = |w: Vec3, below: bool| if below { Vec3::new(w.x, w.y, -w.z) } else { w };
+    Inputs {
+        wo: (0..N).map(|k| flip(i.wo[k], k % 4 >= 2)).collect(),
+        wi: (0..N).map(|k| flip(i.wi[k], k % 4 >= 2)).collect(),
+        u: i.u.clone(),
+        uc: i.uc.clone(),
+    }
+}
+
+/// `eval`, `pdf` and `sample` of `model` over the inputs.
+fn model<M: Bxdf>(c: &mut Criterion, name: &str, model: &M, i: &Inputs) {
+    let m = black_box(model);
+    let mut g = group(c, name);
+    g.bench_function("eval", |b| {
+        b.iter(|| {
+            for k in 0..N {
+                black_box(m.eval(i.wo[k], i.wi[k]));
+            }
+        })
+    });
+    g.bench_function("pdf", |b| {
+        b.iter(|| {
+            for k in 0..N {
+                black_box(m.pdf(i.wo[k], i.wi[k]));
+            }
+        })
+    });
+    g.bench_function("sample", |b| {
+        b.iter(|| {
+            for k in 0..N {
+                black_box(m.sample(i.wo[k], i.u[k], i.uc[k]));
+            }
+        })
+    });
+    g.finish();
+}
+
+fn ggx(a: f32) -> Ggx {
+    Ggx::isotropic(Alpha::new(a).unwrap())
+}
+
+fn combinators(c: &mut Criterion) {
+    let i = inputs();
+    let rho = Vec3::new(0.8, 0.5, 0.2);
+    let gold = Microfacet::new(
+        ggx(0.3),
+        Masking::HeightCorrelated,
+        Conductor {
+            ior: metals::GOLD.rgb(),
+        },
+    );
+    let lambert = Lambert::new(rho).unwrap();
+    model(c, "Lambert RGB (part)", &lambert, &i);
+    model(c, "GGX gold RGB α 0.3 (part)", &gold, &i);
+    model(
+        c,
+        "Mix(Lambert, GGX gold) RGB w 0.5",
+        &Mix::new(lambert, gold, 0.5).unwrap(),
+        &i,
+    );
+    model(
+        c,
+        "TwoSided(GGX gold) RGB, half from below",
+        &TwoSided::new(gold),
+        &mirrored(&i),
+    );
+    model(
+        c,
+        "DiffuseTransmission RGB",
+        &DiffuseTransmission::new(rho * 0.5, rho * 0.4).unwrap(),
+        &two_sided(&i),
+    );
+    model(c, "Sheen RGB r 0.5", &Sheen::new(rho, 0.5).unwrap(), &i);
+    let mut g = group(c, "Sheen construction");
+    g.throughput(Throughput::Elements(1));
+    g.bench_function("Sheen::new", |b| {
+        b.iter(|| black_box(Sheen::new(black_box(rho), 0.5).unwrap()))
+    });
+    g.finish();
+}
+
+fn layered(c: &mut Criterion) {
+    let i = inputs();
+    let rho = Vec3::new(0.8, 0.5, 0.2);
+    let glass = Eta::new(1.5).unwrap();
+    let coated = CoatedDiffuse::coated_diffuse(rho, ggx(0.3), glass).unwrap();
+    model(c, "CoatedDiffuse RGB α 0.3 η 1.5 (1 walk)", &coated, &i);
+    model(
+        c,
+        "CoatedDiffuse RGB α 0.3 η 1.5 (4 walks)",
+        &coated.with_samples(4).unwrap(),
+        &i,
+    );
+    model(
+        c,
+        "CoatedDiffuse RGB, scattering layer (0.5 mfp, albedo 0.8, g 0.3)",
+        &coated
+            .with_thickness(0.5)
+            .unwrap()
+            .with_medium(Vec3::splat(0.8), 0.3)
+            .unwrap(),
+        &i,
+    );
+    let conductor =
+        CoatedConductor::coated_conductor(ggx(0.1), glass, ggx(0.3), metals::GOLD.rgb()).unwrap();
+    model(
+        c,
+        "CoatedConductor RGB coat α 0.1, gold α 0.3 (1 walk)",
+        &conductor,
+        &i,
+    );
+}
+
+criterion_group! {
+    name = benches;
+    config = Criterion::default()
+        .warm_up_time(Duration::from_millis(300))
+        .measurement_time(Duration::from_millis(1000))
+        .sample_size(20)
+        .nresamples(10_000);
+    targets = combinators, layered
+}
+criterion_main!(benches);

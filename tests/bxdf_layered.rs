@@ -1,0 +1,425 @@
+//! The stochastic layered models (issue 12): every law in expectation through `check_bxdf`,
+//! the white furnace, an index-matched coat that vanishes, the closed form of a smooth coat
+//! over a diffuse base with the coat's internal reflection (which `Glazed` and `Plastic`
+//! leave out), determinism, the variance of one estimate and the parameters' validation.
+//!
+//! `cargo test --test bxdf_layered -- --nocapture` prints every figure.
+
+mod common;
+
+use lobe::bxdf::{
+    Bxdf, CoatedConductor, CoatedDiffuse, Glazed, Lambert, Layered, Mix, Plastic, RoughDielectric,
+    SmoothDielectric, TwoSided,
+};
+use lobe::microfacet::Ggx;
+use lobe::verify::{Accumulator, Config, Law, Report, albedo, albedo_sampled, check_bxdf, sidak};
+use lobe::{Alpha, Eta, Vec2, Vec3, metals};
+
+/// Statistical tests in this file (harness runs count as one each; the closed-form and
+/// furnace comparisons one per configuration).
+const TESTS: usize = 8 + 12 + 18 + 4 + 3;
+
+fn ggx(a: f32) -> Ggx {
+    Ggx::isotropic(Alpha::new(a).unwrap())
+}
+
+fn eta(e: f32) -> Eta {
+    Eta::new(e).unwrap()
+}
+
+/// The laws' budget: sized so that every model below runs in about a second.
+fn config() -> Config {
+    Config {
+        albedo_samples: 40_000,
+        chi2_samples: 100_000,
+        pairs: 4_000,
+        significance: sidak(0.01, TESTS),
+        expectation_evaluations: 64,
+        expectation_pairs: 150,
+        ..Config::default()
+    }
+}
+
+/// Runs every law, prints the report and asserts that every law held, and that the
+/// reciprocity, sampling and consistency reports are the in-expectation ones.
+fn assert_every_law(name: &str, bxdf: &dyn Bxdf<Spectrum = Vec3>, config: &Config) -> Report {
+    let report = check_bxdf(name, bxdf, config);
+    eprintln!("{report}");
+    assert!(report.passed(), "{report}");
+    for law in [Law::Reciprocity, Law::Sampling, Law::Consistency] {
+        if let Some(r) = report.get(law) {
+            assert!(
+                r.figure_name.contains("expect") || r.figure_name.contains("per bin"),
+                "{name}: {law} was not checked in expectation: {r}"
+            );
+        }
+    }
+    report
+}
+
+/// An `f32` model as RGB.
+fn rgb<B: lobe::bxdf::Prepare<Spectrum = f32>>(b: B) -> lobe::bxdf::Mono<B, Vec3> {
+    lobe::bxdf::Mono::new(b)
+}
+
+#[test]
+fn every_layered_model_obeys_every_law_in_expectation() {
+    let c = config();
+    let coated =
+        CoatedDiffuse::coated_diffuse(Vec3::new(0.8, 0.4, 0.1), ggx(0.3), eta(1.5)).unwrap();
+    assert_every_law("CoatedDiffuse RGB α=0.3 η=1.5", &coated, &c);
+    let glossy_coat =
+        CoatedDiffuse::coated_diffuse(Vec3::splat(0.5), ggx(0.05), eta(1.33)).unwrap();
+    assert_every_law("CoatedDiffuse α=0.05 η=1.33", &glossy_coat, &c);
+    let gold = CoatedConductor::coated_conductor(ggx(0.1), eta(1.5), ggx(0.3), metals::GOLD.rgb())
+        .unwrap();
+    assert_every_law("CoatedConductor gold, coat α=0.1, base α=0.3", &gold, &c);
+    let smooth = Layered::new(
+        SmoothDielectric::new(eta(1.5)),
+        Lambert::new(Vec3::new(0.2, 0.6, 0.9)).unwrap(),
+    );
+    assert_every_law("smooth coat over Lambert", &smooth, &c);
+    let medium = CoatedDiffuse::coated_diffuse(Vec3::splat(0.3), ggx(0.2), eta(1.5))
+        .unwrap()
+        .with_thickness(0.3)
+        .unwrap()
+        .with_medium(Vec3::new(0.9, 0.7, 0.5), 0.5)
+        .unwrap();
+    assert_every_law("CoatedDiffuse with a scattering layer", &medium, &c);
+    // The combinators of a stochastic model are stochastic and checked so too.
+    let two_sided = TwoSided::new(coated);
+    let both_sides = Config {
+        directions: [0.0_f32, 60.0, 85.0]
+            .iter()
+            .flat_map(|&t| [common::dir(t, 0.4), -common::dir(t, 0.4)])
+            .collect(),
+        ..config()
+    };
+    assert!(two_sided.stochastic());
+    assert_every_law("TwoSided(CoatedDiffuse)", &two_sided, &both_sides);
+    let satin = Mix::new(coated, Lambert::new(Vec3::splat(0.5)).unwrap(), 0.3).unwrap();
+    assert!(satin.stochastic());
+    assert_every_law("Mix(CoatedDiffuse, Lambert, 0.3)", &satin, &c);
+    let mono = rgb(CoatedDiffuse::coated_diffuse(0.8_f32, ggx(0.6), eta(2.0)).unwrap());
+    assert_every_law("CoatedDiffuse f32 α=0.6 η=2 (as RGB)", &mono, &c);
+}
+
+/// The white furnace: a smooth coat over a white Lambertian base with no absorption reflects
+/// everything at every angle and index — every sample's weight is exactly 1 (the walk is
+/// long enough that the paths it cuts off carry less than 1e-12). Rough coats lose what their
+/// single-scattering microfacet interface loses, at each of the several times the light meets
+/// it: measured and printed, bounded by 1, and not hidden.
+#[test]
+fn the_white_furnace() {
+    let k = common::k_sigma(0.01, TESTS);
+    let budget = Config {
+        albedo_samples: 50_000,
+        ..Config::default()
+    };
+    for e in [0.7_f32, 1.1, 1.5, 2.5] {
+        let stack = Layered::new(
+            SmoothDielectric::new(eta(e)),
+            Lambert::new(1.0_f32).unwrap(),
+        )
+        .with_thickness(0.0)
+        .unwrap()
+        .with_max_depth(2048)
+        .unwrap();
+        for theta in [0.0, 45.0, 80.0] {
+            let a = albedo_sampled(&stack, common::dir(theta, 0.2), &budget);
+            eprintln!("smooth η={e} θo={theta}°: {a}");
+            assert!(
+                (a.mean - 1.0).abs() <= 1e-6 + k * a.std_err,
+                "η={e} θo={theta}°: {a}"
+            );
+        }
+    }
+    // A nearly smooth coat loses what its interface loses at grazing angles.
+    for (a, e, lo) in [
+        (0.001_f32, 1.5_f32, 0.999),
+        (0.05, 1.5, 0.95),
+        (0.3, 1.5, 0.6),
+    ] {
+        let stack = CoatedDiffuse::coated_diffuse(1.0_f32, ggx(a), eta(e))
+            .unwrap()
+            .with_thickness(0.0)
+            .unwrap()
+            .with_max_depth(1024)
+            .unwrap();
+        for theta in [0.0, 60.0] {
+            let m = albedo(&stack, common::dir(theta, 0.2), &budget);
+            eprintln!(
+                "rough α={a} η={e} θo={theta}°: sampled {}, cosine {:?}",
+                m.sampled, m.cosine
+            );
+            assert!(m.sampled.mean <= 1.0 + k * m.sampled.std_err, "{m:?}");
+            assert!(m.sampled.mean >= lo, "{m:?}");
+        }
+    }
+}
+
+/// With an index-matched smooth coat (`η = 1`, no layer) the stack is its base, estimate by
+/// estimate: the coat neither reflects nor bends, so every walk is one bounce off the base.
+#[test]
+fn an_index_matched_coat_is_its_base() {
+    let base = Lambert::new(Vec3::new(0.7, 0.5, 0.2)).unwrap();
+    let stack = Layered::new(SmoothDielectric::new(eta(1.0)), base)
+        .with_thickness(0.0)
+        .unwrap();
+    let mut rng = lobe::verify::Pcg32::new(5, 5);
+    let mut worst = 0.0_f32;
+    for i in 0..2_000_u64 {
+        let wo = lobe::sampling::cosine_hemisphere(rng.next_vec2());
+        let wi = lobe::sampling::cosine_hemisphere(rng.next_vec2());
+        if wo.z < 1e-3 || wi.z < 1e-3 {
+            continue;
+        }
+        let (f, b) = (stack.eval_seeded(wo, wi, i), base.eval(wo, wi));
+        let (p, q) = (stack.pdf_seeded(wo, wi, i), base.pdf(wo, wi));
+        worst = worst
+            .max(((f - b).abs() / b).max_element())
+            .max((p - q).abs() / q);
+        let u = rng.next_vec2();
+        let s = stack.sample(wo, u, 0.5).unwrap();
+        worst = worst.max(((s.weight() - base.albedo()).abs() / base.albedo()).max_element());
+    }
+    eprintln!("index-matched coat against its base: largest relative difference {worst:e}");
+    assert!(worst < 1e-5, "{worst}");
+}
+
+/// The exact unpolarised Fresnel reflectance in `f64`, written here: light meeting the
+/// interface at `cos_i` from a medium of index `n_i` toward one of index `n_t`.
+fn fresnel(cos_i: f64, n_i: f64, n_t: f64) -> f64 {
+    let sin_t = n_i / n_t * (1.0 - cos_i * cos_i).max(0.0).sqrt();
+    if sin_t >= 1.0 {
+        return 1.0;
+    }
+    let cos_t = (1.0 - sin_t * sin_t).sqrt();
+    let rs = (n_i * cos_i - n_t * cos_t) / (n_i * cos_i + n_t * cos_t);
+    let rp = (n_t * cos_i - n_i * cos_t) / (n_t * cos_i + n_i * cos_t);
+    0.5 * (rs * rs + rp * rp)
+}
+
+/// `F̄_i = 2 ∫₀¹ F_inside(μ) μ dμ`, the coat's reflectance for diffuse light from inside, by
+/// the midpoint rule on 200 000 panels (the integrand has a kink at the critical angle).
+fn internal_diffuse_reflectance(e: f64) -> f64 {
+    let n = 200_000;
+    (0..n)
+        .map(|i| {
+            let mu = (i as f64 + 0.5) / n as f64;
+            2.0 * fresnel(mu, e, 1.0) * mu / n as f64
+        })
+        .sum()
+}
+
+/// A smooth coat of index `η` over a Lambertian base of reflectance `ρ`, with the light the
+/// coat reflects back into the base followed: `ρ_total = F + (1 − F)(1 − F̄_i) ρ / (1 − ρ F̄_i)`
+/// (Kelemen & Szirmay-Kalos 2001; Weidlich & Wilkie 2007; the geometric series of the
+/// bounces), against the sampled albedo; `Glazed` (`F + (1 − F) ρ`) and `Plastic` with the
+/// smoothest coat (`α = 1e-4`) leave the internal reflection out and are printed beside it.
+#[test]
+fn a_smooth_coat_over_lambert_matches_the_closed_form() {
+    let k = common::k_sigma(0.01, TESTS);
+    let budget = Config {
+        albedo_samples: 100_000,
+        ..Config::default()
+    };
+    for e in [1.33_f32, 1.5, 2.0] {
+        let fi = internal_diffuse_reflectance(f64::from(e));
+        for rho in [0.3_f32, 0.8] {
+            let stack = Layered::new(SmoothDielectric::new(eta(e)), Lambert::new(rho).unwrap())
+                .with_thickness(0.0)
+                .unwrap()
+                .with_max_depth(1024)
+                .unwrap();
+            let glazed = Glazed::new(rho, eta(e)).unwrap();
+            let plastic = Plastic::new(rho, ggx(1e-4), eta(e)).unwrap();
+            for theta in [0.0_f32, 40.0, 70.0] {
+                let wo = common::dir(theta, 0.1);
+                let f = fresnel(f64::from(wo.z), 1.0, f64::from(e));
+                let r = f64::from(rho);
+                let closed = f + (1.0 - f) * (1.0 - fi) * r / (1.0 - r * fi);
+                let a = albedo_sampled(&stack, wo, &budget);
+                let g = albedo_sampled(&glazed, wo, &budget);
+                let p = albedo_sampled(&plastic, wo, &budget);
+                eprintln!(
+                    "η={e} ρ={rho} θo={theta}°: closed form {closed:.5}, layered {a}, Glazed \
+                     {:.5}, Plastic(α=1e-4) {:.5}",
+                    g.mean, p.mean
+                );
+                assert!(
+                    (a.mean - closed).abs() <= k * a.std_err + 1e-6,
+                    "η={e} ρ={rho} θo={theta}°: {a} against {closed}"
+                );
+            }
+        }
+    }
+}
+
+/// The estimates are functions of their arguments: the same call gives the same number,
+/// `eval` is seed 0, and other seeds give other estimates.
+#[test]
+fn estimates_are_deterministic_and_seeded() {
+    let m = CoatedDiffuse::coated_diffuse(0.8_f32, ggx(0.3), eta(1.5)).unwrap();
+    let (wo, wi) = (common::dir(30.0, 0.0), common::dir(50.0, 2.0));
+    assert_eq!(m.eval(wo, wi).to_bits(), m.eval(wo, wi).to_bits());
+    assert_eq!(m.eval(wo, wi).to_bits(), m.eval_seeded(wo, wi, 0).to_bits());
+    assert_eq!(m.pdf(wo, wi).to_bits(), m.pdf_seeded(wo, wi, 0).to_bits());
+    let evals: Vec<u32> = (0..8).map(|s| m.eval_seeded(wo, wi, s).to_bits()).collect();
+    let distinct = evals
+        .iter()
+        .enumerate()
+        .all(|(i, a)| evals[..i].iter().all(|b| b != a));
+    assert!(distinct, "{evals:?}");
+    let (u, uc) = (Vec2::new(0.3, 0.8), 0.7);
+    assert_eq!(m.sample(wo, u, uc), m.sample(wo, u, uc));
+    assert!(m.stochastic() && !Lambert::new(0.5_f32).unwrap().stochastic());
+    // An exact model's seeded calls are its plain ones.
+    let l = Lambert::new(0.5_f32).unwrap();
+    assert_eq!(l.eval_seeded(wo, wi, 9), l.eval(wo, wi));
+    assert_eq!(l.pdf_seeded(wo, wi, 9), l.pdf(wo, wi));
+}
+
+/// Reciprocity without the seeded variant: an isotropic model's expectation is the same for
+/// every rotation of the pair about the normal, so the plain `eval` averaged over common
+/// random rotations of `(wo, wi)` — each rotation a new pair, hence a new estimate — must
+/// agree with the same average of `eval(wi, wo)` (DESIGN, "Stochastic models").
+#[test]
+fn reciprocity_by_common_rotations_about_the_normal() {
+    let k = common::k_sigma(0.01, TESTS);
+    let m = CoatedDiffuse::coated_diffuse(0.8_f32, ggx(0.2), eta(1.5)).unwrap();
+    let rotate = |w: Vec3, phi: f32| {
+        let (s, c) = phi.sin_cos();
+        Vec3::new(c * w.x - s * w.y, s * w.x + c * w.y, w.z)
+    };
+    let mut rng = lobe::verify::Pcg32::new(21, 4);
+    for (wo, wi) in [
+        (common::dir(20.0, 0.0), common::dir(65.0, 2.5)),
+        (common::dir(70.0, 1.0), common::dir(35.0, 1.2)),
+        (
+            common::dir(50.0, 0.0),
+            common::dir(50.0, core::f32::consts::PI),
+        ),
+    ] {
+        let (mut fwd, mut bwd) = (Accumulator::new(), Accumulator::new());
+        for _ in 0..20_000 {
+            let phi = core::f32::consts::TAU * rng.next_f32();
+            let (a, b) = (rotate(wo, phi), rotate(wi, phi));
+            fwd.push(f64::from(m.eval(a, b)));
+            let phi = core::f32::consts::TAU * rng.next_f32();
+            let (a, b) = (rotate(wo, phi), rotate(wi, phi));
+            bwd.push(f64::from(m.eval(b, a)));
+        }
+        let (f, b) = (fwd.finish(), bwd.finish());
+        eprintln!("rotations: f(wo, wi) {f}, f(wi, wo) {b}");
+        assert!(
+            (f.mean - b.mean).abs() <= k * f.std_err.hypot(b.std_err),
+            "{f} {b}"
+        );
+    }
+}
+
+/// A sample's `pdf` is an independent estimate of the density at its direction: averaged
+/// over the sampler's directions it estimates `∫ p² dω`, as `pdf_seeded` at the same
+/// directions does; its weight is the walk's (checked in expectation by `check_bxdf`).
+#[test]
+fn a_samples_pdf_estimates_the_density_at_its_direction() {
+    let k = common::k_sigma(0.01, TESTS);
+    let m = CoatedDiffuse::coated_diffuse(0.8_f32, ggx(0.3), eta(1.5)).unwrap();
+    let mut rng = lobe::verify::Pcg32::new(11, 3);
+    let (mut own, mut other) = (Accumulator::new(), Accumulator::new());
+    let wo = common::dir(40.0, 0.3);
+    for i in 0..100_000_u64 {
+        if let Some(s) = m.sample(wo, rng.next_vec2(), rng.next_f32()) {
+            own.push(f64::from(s.pdf));
+            other.push(f64::from(m.pdf_seeded(wo, s.wi, 1_000_000 + i)));
+        } else {
+            own.push(0.0);
+            other.push(0.0);
+        }
+    }
+    let (a, b) = (own.finish(), other.finish());
+    eprintln!("E[sample().pdf] = {a}, E[pdf(wo, sample().wi)] = {b}");
+    assert!(
+        (a.mean - b.mean).abs() <= k * a.std_err.hypot(b.std_err),
+        "{a} {b}"
+    );
+}
+
+/// The spread of one estimate, for the docs: the relative standard deviation of `eval` and
+/// `pdf` for the defaults (one walk) at `θo = θi = 30°`, 90° apart, and its `1/√n` fall with
+/// `n` walks per estimate.
+#[test]
+fn the_variance_of_one_estimate() {
+    let (wo, wi) = (
+        common::dir(30.0, 0.0),
+        common::dir(30.0, core::f32::consts::FRAC_PI_2),
+    );
+    let spread = |m: &dyn Bxdf<Spectrum = f32>| {
+        let (mut f, mut p) = (Accumulator::new(), Accumulator::new());
+        for s in 0..40_000 {
+            f.push(f64::from(m.eval_seeded(wo, wi, s)));
+            p.push(f64::from(m.pdf_seeded(wo, wi, s)));
+        }
+        let (ef, ep) = (f.finish(), p.finish());
+        (f.variance().sqrt() / ef.mean, p.variance().sqrt() / ep.mean)
+    };
+    let diffuse = CoatedDiffuse::coated_diffuse(0.8_f32, ggx(0.3), eta(1.5)).unwrap();
+    let copper = metals::COPPER.rgb();
+    let red = lobe::ComplexIor::new(copper.eta().x, copper.k().x).unwrap();
+    let conductor = CoatedConductor::coated_conductor(ggx(0.1), eta(1.5), ggx(0.3), red).unwrap();
+    for (name, one, four) in [
+        (
+            "CoatedDiffuse",
+            spread(&diffuse),
+            spread(&diffuse.with_samples(4).unwrap()),
+        ),
+        (
+            "CoatedConductor",
+            spread(&conductor),
+            spread(&conductor.with_samples(4).unwrap()),
+        ),
+    ] {
+        eprintln!(
+            "{name}: relative standard deviation of one estimate: eval {:.3}, pdf {:.3}; with \
+             4 walks: eval {:.3}, pdf {:.3}",
+            one.0, one.1, four.0, four.1
+        );
+        // Four walks halve the spread (within the spread's own sampling error, a few %).
+        assert!((four.0 / one.0 - 0.5).abs() < 0.05, "{one:?} {four:?}");
+        assert!((four.1 / one.1 - 0.5).abs() < 0.05, "{one:?} {four:?}");
+    }
+}
+
+#[test]
+fn parameters_are_validated() {
+    let m = CoatedDiffuse::coated_diffuse(0.5_f32, ggx(0.3), eta(1.5)).unwrap();
+    assert_eq!(m.with_thickness(f32::NAN).unwrap_err().param(), "thickness");
+    assert_eq!(m.with_thickness(-1.0).unwrap_err().param(), "thickness");
+    assert_eq!(m.with_medium(1.5, 0.0).unwrap_err().param(), "albedo");
+    assert_eq!(m.with_medium(0.5, 1.0).unwrap_err().param(), "g");
+    assert_eq!(m.with_medium(0.5, f32::NAN).unwrap_err().param(), "g");
+    assert_eq!(m.with_max_depth(0).unwrap_err().param(), "max_depth");
+    assert_eq!(m.with_samples(0).unwrap_err().param(), "samples");
+    assert_eq!(
+        CoatedDiffuse::coated_diffuse(f32::NAN, ggx(0.3), eta(1.5))
+            .unwrap_err()
+            .param(),
+        "reflectance"
+    );
+    // ior / η out of range: a metal of index 0.5 under a coat of η = 1000.
+    let ior = lobe::ComplexIor::new(0.5_f32, 999.0).unwrap();
+    assert!(CoatedConductor::coated_conductor(ggx(0.1), eta(1e-3), ggx(0.1), ior).is_err());
+    // The defaults are pbrt-v4's, with a longer walk.
+    assert_eq!(
+        (m.thickness(), m.max_depth(), m.samples(), m.medium()),
+        (0.01, 64, 1, (0.0, 0.0))
+    );
+    // The top is kept in radiance mode whatever it was given in.
+    let rd = RoughDielectric::new(ggx(0.3), eta(1.5));
+    let imp = Layered::new(
+        rd.with_mode(lobe::bxdf::TransportMode::Importance),
+        Lambert::new(0.5_f32).unwrap(),
+    );
+    assert_eq!(*imp.top(), rd);
+}
