@@ -16,7 +16,8 @@
 //! `cargo run --release --example raytracer -- --help` lists the options. Under
 //! `cargo test` (the example has `test = true`) run the unit tests of every module, the
 //! white furnace tests ([`furnace_tests`]), direct lighting against closed forms
-//! ([`light_tests`]) and the SH environment and irradiance shading ([`sh_tests`]).
+//! ([`light_tests`]), the SH environment and irradiance shading ([`sh_tests`]) and the
+//! shadow terminator of a coarse mesh ([`terminator_tests`]).
 
 mod aabb;
 mod bvh;
@@ -50,6 +51,8 @@ mod furnace_tests;
 mod light_tests;
 #[cfg(test)]
 mod sh_tests;
+#[cfg(test)]
+mod terminator_tests;
 
 use cli::{Command, IntegratorChoice, Options};
 use heckbert::PathFilter;

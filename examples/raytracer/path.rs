@@ -90,7 +90,12 @@ impl PathTracer {
             if depth >= self.max_depth {
                 break;
             }
-            let sp = ShadingPoint::new(scene.material(hit.material), &hit, -ray.dir);
+            let sp = ShadingPoint::new(
+                scene.material(hit.material),
+                &hit,
+                -ray.dir,
+                scene.terminator_fix,
+            );
             let bsdf = &sp.material.bsdf;
 
             // Next-event estimation, through the non-delta lobes only. The random numbers
@@ -113,18 +118,23 @@ impl PathTracer {
             for light in &scene.lights {
                 let u = rng.next_vec2();
                 if nee && !(by_irradiance && matches!(light, Light::Environment(_))) {
-                    let Some(ls) = light.sample(sp.p, sp.ng, u) else {
+                    let Some(ls) = light.sample(sp.p, u) else {
                         continue;
                     };
                     let wi = sp.frame.to_local(ls.wi);
-                    if !sp.consistent(ls.wi, wi) {
+                    let Some(mis) = sp.light_direction(ls.wi, wi) else {
                         continue;
-                    }
+                    };
                     let f = bsdf.eval(sp.wo, wi);
-                    if f == Vec3::ZERO || ls.li == Vec3::ZERO || scene.occluded(&ls.shadow) {
+                    if f == Vec3::ZERO || ls.li == Vec3::ZERO {
                         continue;
                     }
-                    let w = if ls.delta {
+                    match ls.shadow_ray(sp.shadow_origin(ls.wi), sp.ng) {
+                        Some(shadow) if !scene.occluded(&shadow) => {}
+                        _ => continue,
+                    }
+                    // Without MIS where the BSDF sample would be dropped (below the facet).
+                    let w = if ls.delta || !mis {
                         1.0
                     } else {
                         power_heuristic(1.0, ls.pdf, 1.0, bsdf.pdf(sp.wo, wi))
