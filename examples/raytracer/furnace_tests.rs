@@ -55,6 +55,7 @@ fn settings(seed: u64) -> RenderSettings {
         height: SIZE,
         spp: SPP,
         seed,
+        clamp: None,
     }
 }
 
@@ -332,6 +333,7 @@ fn disjoint_path_filters_add_up() {
         height: 16,
         spp: 8,
         seed: 5,
+        clamp: None,
     };
     let full = render_stats(&scene, &path_tracer(8, None), &s);
     let parts: Vec<Vec<Estimate>> = ["L E", "L D E", "L D D+ E"]
@@ -369,6 +371,7 @@ fn whitted_furnace_is_white_too() {
         height: 24,
         spp: 4,
         seed: 6,
+        clamp: None,
     };
     for material in [
         furnace::white_lambert().unwrap(),

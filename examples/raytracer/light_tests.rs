@@ -54,6 +54,7 @@ fn rendered(scene: &Scene) -> Estimate {
         height: 1,
         spp: SAMPLES,
         seed: 3,
+        clamp: None,
     };
     let mut rng = rng_for(&s, 0, 0);
     let mut acc = Accumulator::new();

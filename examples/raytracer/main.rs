@@ -75,7 +75,7 @@ fn main() -> ExitCode {
                 eprintln!("error: {e}");
                 return ExitCode::from(2);
             }
-            match run(&options) {
+            match render::with_threads(options.threads, || run(&options)) {
                 Ok(()) => ExitCode::SUCCESS,
                 Err(e) => {
                     eprintln!("error: {e}");
@@ -138,9 +138,10 @@ fn run(o: &Options) -> Result<(), String> {
         height: o.height,
         spp: o.spp,
         seed: o.seed,
+        clamp: o.clamp,
     };
     println!(
-        "Rendering {:?} scene{}{}, {}×{} at {} spp, {:?} integrator, max depth {}{}, {} threads",
+        "Rendering {:?} scene{}{}, {}×{} at {} spp, {:?} integrator, max depth {}{}{}, {} threads",
         o.scene,
         if o.env_sh {
             ", SH environment (order 3)"
@@ -160,6 +161,9 @@ fn run(o: &Options) -> Result<(), String> {
         o.paths
             .as_deref()
             .map_or(String::new(), |p| format!(", paths {p:?}")),
+        o.clamp.map_or(String::new(), |c| format!(
+            ", samples clamped to {c} (biased)"
+        )),
         rayon::current_num_threads(),
     );
     let start = Instant::now();

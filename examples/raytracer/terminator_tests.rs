@@ -183,6 +183,7 @@ fn direct_light(scene: &Scene, pixels: &[(u32, u32)]) -> Vec<Option<f64>> {
         height: H,
         spp: SPP,
         seed: 7,
+        clamp: None,
     };
     pixels
         .par_iter()
