@@ -46,7 +46,8 @@ pub struct Options {
     pub irradiance: bool,
     /// Worker threads; `None` for one per core (`--threads`).
     pub threads: Option<u32>,
-    /// Clamp each camera sample's radiance to this (`--clamp`, biased); `None` by default.
+    /// Clamp each contribution of indirect light to this (`--clamp`, biased); `None` by
+    /// default.
     pub clamp: Option<f32>,
 }
 
@@ -123,13 +124,15 @@ OPTIONS:
     --seed N           the random seed (default 1): a render is reproducible for a seed,
                        whatever the number of threads
     --threads N        render on N threads (default: one per core)
-    --clamp X          clamp the radiance each camera sample brings (the whole path's) to
-                       at most X, scaling its RGB down to keep the hue. Off by default.
-                       BIASED: it removes fireflies (rare bright paths, e.g. the caustics
-                       that rough and thin glass throw on the floor, found by chance at 64
-                       spp) by removing light, so the image is darker than the truth
-                       wherever such paths carry real light; it no longer converges to the
-                       right answer as samples grow
+    --clamp X          path tracer: clamp each contribution of indirect light (light a
+                       path finds after a diffuse or glossy bounce that is not its last
+                       scattering, e.g. a caustic on the floor) to at most X, scaling its
+                       RGB down to keep the hue; direct light and what mirrors and smooth
+                       glass show of it are never clamped. Off by default. BIASED: it
+                       removes fireflies (such as the caustics rough and thin glass throw
+                       on the floor at 64 spp) by removing real light, so the image is
+                       darker than the truth where those paths carry it, and it no longer
+                       converges to the right answer as samples grow
     --layout FILE      write the default scene's label layout (which model is where) as
                        Markdown to FILE
     -h, --help         print this help

@@ -55,7 +55,6 @@ fn settings(seed: u64) -> RenderSettings {
         height: SIZE,
         spp: SPP,
         seed,
-        clamp: None,
     }
 }
 
@@ -64,6 +63,7 @@ fn path_tracer(max_depth: u32, filter: Option<&str>) -> Integrator {
         max_depth,
         filter: filter.map(|f| PathFilter::parse(f).unwrap()),
         irradiance: false,
+        clamp: None,
     })
 }
 
@@ -333,7 +333,6 @@ fn disjoint_path_filters_add_up() {
         height: 16,
         spp: 8,
         seed: 5,
-        clamp: None,
     };
     let full = render_stats(&scene, &path_tracer(8, None), &s);
     let parts: Vec<Vec<Estimate>> = ["L E", "L D E", "L D D+ E"]
@@ -371,7 +370,6 @@ fn whitted_furnace_is_white_too() {
         height: 24,
         spp: 4,
         seed: 6,
-        clamp: None,
     };
     for material in [
         furnace::white_lambert().unwrap(),

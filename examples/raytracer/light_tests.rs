@@ -48,13 +48,13 @@ fn rendered(scene: &Scene) -> Estimate {
         max_depth: 1,
         filter: None,
         irradiance: false,
+        clamp: None,
     });
     let s = RenderSettings {
         width: 1,
         height: 1,
         spp: SAMPLES,
         seed: 3,
-        clamp: None,
     };
     let mut rng = rng_for(&s, 0, 0);
     let mut acc = Accumulator::new();

@@ -126,6 +126,7 @@ fn run(o: &Options) -> Result<(), String> {
             max_depth: o.max_depth,
             filter,
             irradiance: o.irradiance,
+            clamp: o.clamp,
         }),
         IntegratorChoice::Whitted => Integrator::Whitted(Whitted {
             max_depth: o.max_depth,
@@ -138,7 +139,6 @@ fn run(o: &Options) -> Result<(), String> {
         height: o.height,
         spp: o.spp,
         seed: o.seed,
-        clamp: o.clamp,
     };
     println!(
         "Rendering {:?} scene{}{}, {}×{} at {} spp, {:?} integrator, max depth {}{}{}, {} threads",
@@ -162,7 +162,7 @@ fn run(o: &Options) -> Result<(), String> {
             .as_deref()
             .map_or(String::new(), |p| format!(", paths {p:?}")),
         o.clamp.map_or(String::new(), |c| format!(
-            ", samples clamped to {c} (biased)"
+            ", indirect light clamped to {c} (biased)"
         )),
         rayon::current_num_threads(),
     );

@@ -20,8 +20,6 @@ pub struct RenderSettings {
     pub spp: u32,
     /// The seed of every pixel's generator.
     pub seed: u64,
-    /// Clamp each sample's radiance to this (biased; see [`clamp_sample`]); `None`: off.
-    pub clamp: Option<f32>,
 }
 
 /// A rendered image: linear radiance per pixel, rows from the top.
@@ -37,7 +35,7 @@ pub struct Film {
 }
 
 /// One radiance sample of pixel `(x, y)`: a ray through a uniformly jittered point of the
-/// pixel (a box filter), clamped if the settings ask for it ([`clamp_sample`]).
+/// pixel (a box filter).
 #[inline]
 pub fn sample_pixel(
     scene: &Scene,
@@ -52,28 +50,7 @@ pub fn sample_pixel(
         (x as f32 + jitter.x) / settings.width as f32,
         (y as f32 + jitter.y) / settings.height as f32,
     );
-    let l = integrator.radiance(scene, scene.camera.ray(film), rng);
-    match settings.clamp {
-        Some(max) => clamp_sample(l, max),
-        None => l,
-    }
-}
-
-/// The sample `l` scaled down, if need be, so that its largest channel is at most `max`
-/// (pbrt-v4's `maxcomponentvalue`): the hue is kept. A non-finite sample is returned as it
-/// is (the render counts and drops it).
-///
-/// This is biased: it takes away exactly the light of the rare bright samples that make
-/// fireflies, and that light is real (a caustic's, a highlight's), so the image converges
-/// to something darker than the truth.
-#[inline]
-pub fn clamp_sample(l: Vec3, max: f32) -> Vec3 {
-    let m = l.max_element();
-    if m > max && l.is_finite() {
-        l * (max / m)
-    } else {
-        l
-    }
+    integrator.radiance(scene, scene.camera.ray(film), rng)
 }
 
 /// The generator of pixel `(x, y)`.
@@ -162,57 +139,26 @@ mod tests {
     use crate::path::PathTracer;
     use crate::scenes::SceneChoice;
 
-    fn settings(clamp: Option<f32>) -> RenderSettings {
-        RenderSettings {
-            width: 32,
-            height: 18,
-            spp: 4,
-            seed: 9,
-            clamp,
-        }
-    }
-
-    fn path() -> Integrator {
-        Integrator::Path(PathTracer {
-            max_depth: 6,
-            filter: None,
-            irradiance: false,
-        })
-    }
-
-    #[test]
-    fn clamping_keeps_the_hue_and_leaves_small_samples_alone() {
-        let l = Vec3::new(40.0, 20.0, 10.0);
-        assert_eq!(clamp_sample(l, 8.0), Vec3::new(8.0, 4.0, 2.0));
-        assert_eq!(clamp_sample(l, 40.0), l);
-        assert_eq!(clamp_sample(Vec3::splat(0.5), 1.0), Vec3::splat(0.5));
-        let bad = Vec3::new(f32::INFINITY, 1.0, 1.0);
-        assert!(
-            !clamp_sample(bad, 1.0).is_finite(),
-            "left for the render to drop"
-        );
-    }
-
-    /// The default scene rendered with a clamp of 1: no pixel's mean can exceed it; without
-    /// one, some do (the area light's highlights).
-    #[test]
-    fn a_clamped_render_never_exceeds_the_clamp() {
-        let (scene, _) = SceneChoice::Default.build(16.0 / 9.0).unwrap();
-        let free = render(&scene, &path(), &settings(None), false);
-        let clamped = render(&scene, &path(), &settings(Some(1.0)), false);
-        let brightest = |f: &Film| f.pixels.iter().map(|p| p.max_element()).fold(0.0, f32::max);
-        assert!(brightest(&free) > 1.0, "{}", brightest(&free));
-        assert!(brightest(&clamped) <= 1.0, "{}", brightest(&clamped));
-    }
-
     /// A render is the same on any number of threads: every pixel has its own generator.
     #[test]
     fn threads_do_not_change_the_image() {
         let (scene, _) = SceneChoice::Lights.build(16.0 / 9.0).unwrap();
+        let integrator = Integrator::Path(PathTracer {
+            max_depth: 6,
+            filter: None,
+            irradiance: false,
+            clamp: None,
+        });
+        let settings = RenderSettings {
+            width: 32,
+            height: 18,
+            spp: 4,
+            seed: 9,
+        };
         let on = |n| {
             with_threads(Some(n), || {
                 assert_eq!(rayon::current_num_threads(), n as usize);
-                Ok(render(&scene, &path(), &settings(None), false).pixels)
+                Ok(render(&scene, &integrator, &settings, false).pixels)
             })
             .unwrap()
         };

@@ -132,6 +132,7 @@ fn path(irradiance: bool) -> Integrator {
         max_depth: 8,
         filter: None,
         irradiance,
+        clamp: None,
     })
 }
 
@@ -149,7 +150,6 @@ fn irradiance_shading_in_the_furnace_is_exactly_one() {
         height: 16,
         spp: 16,
         seed: 2,
-        clamp: None,
     };
     let whitted = Integrator::Whitted(Whitted {
         max_depth: 4,
@@ -188,7 +188,6 @@ fn irradiance_shading_agrees_with_path_tracing_on_a_convex_object() {
         height: 24,
         spp: 1024,
         seed: 3,
-        clamp: None,
     };
     let full = render(&scene, &path(false), &s);
     let by_e = render(&scene, &path(true), &s);

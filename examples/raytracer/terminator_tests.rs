@@ -177,13 +177,13 @@ fn direct_light(scene: &Scene, pixels: &[(u32, u32)]) -> Vec<Option<f64>> {
         max_depth: 1,
         filter: None,
         irradiance: false,
+        clamp: None,
     });
     let settings = RenderSettings {
         width: W,
         height: H,
         spp: SPP,
         seed: 7,
-        clamp: None,
     };
     pixels
         .par_iter()
