@@ -63,6 +63,7 @@ fn path_tracer(max_depth: u32, filter: Option<&str>) -> Integrator {
         max_depth,
         filter: filter.map(|f| PathFilter::parse(f).unwrap()),
         irradiance: false,
+        clamp: None,
     })
 }
 

@@ -57,27 +57,81 @@ pub struct LightSample {
     pub pdf: f32,
     /// True for a light no BSDF sample can hit (point, directional): no MIS.
     pub delta: bool,
-    /// The shadow ray that must be unoccluded.
-    pub shadow: Ray,
+    /// What the shadow ray must reach unoccluded.
+    pub target: Target,
+}
+
+/// The end of a light sample's shadow ray.
+#[derive(Clone, Copy, Debug)]
+pub enum Target {
+    /// A point light's position.
+    Point(Vec3),
+    /// The point `q` of a quad light, whose normal is `n`.
+    Quad {
+        /// The point.
+        q: Vec3,
+        /// The light's normal.
+        n: Vec3,
+    },
+    /// The point `q` of a sphere light.
+    Sphere {
+        /// The point.
+        q: Vec3,
+        /// The light's centre.
+        center: Vec3,
+        /// The light's radius.
+        radius: f32,
+    },
+    /// Infinitely far away along `wi` (the sun, the environment).
+    Direction(Vec3),
+}
+
+impl LightSample {
+    /// The shadow ray that must be unoccluded for the light to arrive: from `from` (the shaded
+    /// point, or the point shadow rays start from, [`crate::shading::ShadingPoint::shadow_origin`]),
+    /// on the surface of geometric normal `ng`, to the sampled point of the light. `None` when
+    /// the two points coincide.
+    pub fn shadow_ray(&self, from: Vec3, ng: Vec3) -> Option<Ray> {
+        match self.target {
+            Target::Point(q) => shadow_ray(from, ng, q, None),
+            Target::Quad { q, n } => shadow_ray(from, ng, q, Some(n)),
+            Target::Sphere { q, center, radius } => {
+                // Seen from `from`, which need not be the point the sample was drawn for,
+                // `q` may be just behind the rim: aim at it, but stop where that line first
+                // meets the light, so that the light never shadows itself.
+                let dir = (q - from).normalize_or_zero();
+                let oc = center - from;
+                let b = oc.dot(dir);
+                let disc = radius * radius - (oc - b * dir).length_squared();
+                let t = b - disc.max(0.0).sqrt();
+                let q = if t > 0.0 { from + dir * t } else { q };
+                shadow_ray(from, ng, q, Some((q - center) / radius))
+            }
+            Target::Direction(w) => Some(Ray::new(offset_origin(from, ng, w), w)),
+        }
+    }
 }
 
 impl Light {
-    /// Draws a direction toward the light from the point `p` with geometric normal `ng`,
-    /// with `u` uniform in `[0, 1)²`; `None` when the light cannot reach `p` this time.
-    pub fn sample(&self, p: Vec3, ng: Vec3, u: Vec2) -> Option<LightSample> {
+    /// Draws a direction toward the light from the point `p`, with `u` uniform in `[0, 1)²`;
+    /// `None` when the light cannot reach `p` this time.
+    pub fn sample(&self, p: Vec3, u: Vec2) -> Option<LightSample> {
         match *self {
             Self::Point {
                 position,
                 intensity,
             } => {
-                let shadow = shadow_ray(p, ng, position, None)?;
-                let d2 = (position - p).length_squared();
+                let to = position - p;
+                let d2 = to.length_squared();
+                if !(d2 > 0.0) || !d2.is_finite() {
+                    return None;
+                }
                 Some(LightSample {
-                    wi: shadow.dir,
+                    wi: to / d2.sqrt(),
                     li: intensity / d2,
                     pdf: 1.0,
                     delta: true,
-                    shadow,
+                    target: Target::Point(position),
                 })
             }
             Self::Directional {
@@ -88,7 +142,7 @@ impl Light {
                 li: irradiance,
                 pdf: 1.0,
                 delta: true,
-                shadow: Ray::new(offset_origin(p, ng, to_light), to_light),
+                target: Target::Direction(to_light),
             }),
             Self::Sphere {
                 center,
@@ -110,13 +164,12 @@ impl Light {
                 let b = to_center.dot(wi);
                 let disc = r2 - (to_center - b * wi).length_squared();
                 let q = p + wi * (b - disc.max(0.0).sqrt());
-                let shadow = shadow_ray(p, ng, q, Some((q - center) / radius))?;
                 Some(LightSample {
                     wi,
                     li: radiance,
                     pdf: uniform_cone_pdf(cos_max),
                     delta: false,
-                    shadow,
+                    target: Target::Sphere { q, center, radius },
                 })
             }
             Self::Quad { quad, radiance } => {
@@ -128,13 +181,12 @@ impl Light {
                 if !(cos_l > 0.0) {
                     return None; // the back of the light, or grazing
                 }
-                let shadow = shadow_ray(p, ng, q, Some(quad.normal))?;
                 Some(LightSample {
                     wi,
                     li: radiance,
                     pdf: d2 / (cos_l * quad.area()),
                     delta: false,
-                    shadow,
+                    target: Target::Quad { q, n: quad.normal },
                 })
             }
             Self::Environment(env) => {
@@ -144,7 +196,7 @@ impl Light {
                     li: env.radiance(wi),
                     pdf,
                     delta: false,
-                    shadow: Ray::new(offset_origin(p, ng, wi), wi),
+                    target: Target::Direction(wi),
                 })
             }
         }
@@ -199,7 +251,7 @@ mod tests {
             position: Vec3::new(0.0, 2.0, 0.0),
             intensity: Vec3::splat(8.0),
         };
-        let s = light.sample(Vec3::ZERO, Vec3::Y, Vec2::ZERO).unwrap();
+        let s = light.sample(Vec3::ZERO, Vec2::ZERO).unwrap();
         assert!((s.li.x - 2.0).abs() < 1e-5 && s.delta);
         assert!((s.wi - Vec3::Y).length() < 1e-6);
     }
@@ -215,12 +267,17 @@ mod tests {
         let sphere = crate::sphere::Sphere::new(Vec3::new(0.0, 3.0, 0.0), 1.0, 0);
         for i in 0..64 {
             let u = Vec2::new((i as f32 + 0.5) / 64.0, (i as f32 * 0.618).fract());
-            let s = light.sample(Vec3::ZERO, Vec3::Y, u).unwrap();
+            let s = light.sample(Vec3::ZERO, u).unwrap();
             let hit = sphere.intersect(&Ray::new(Vec3::ZERO, s.wi));
             let hit = hit.expect("a sampled direction reaches the sphere");
             let pdf = light.pdf_hit(Vec3::ZERO, hit.p, hit.ng);
             assert!((pdf - s.pdf).abs() < 1e-4 * s.pdf);
-            assert!(s.shadow.t_max < hit.t);
+            let shadow = s.shadow_ray(Vec3::ZERO, Vec3::Y).unwrap();
+            assert!(shadow.t_max < hit.t);
+            // From a point beside the sampled one, the ray still stops short of the light.
+            let beside = Vec3::new(0.05, 0.0, 0.0);
+            let shadow = s.shadow_ray(beside, Vec3::Y).unwrap();
+            assert!(!sphere.occluded(&shadow), "{i}");
         }
     }
 
@@ -232,7 +289,7 @@ mod tests {
             quad,
             radiance: Vec3::ONE,
         };
-        let s = light.sample(Vec3::ZERO, Vec3::Y, Vec2::splat(0.5)).unwrap();
+        let s = light.sample(Vec3::ZERO, Vec2::splat(0.5)).unwrap();
         // Straight below the centre: pdf = d² / (cos · A) = 4.
         assert!((s.pdf - 4.0).abs() < 1e-4);
         assert!(
@@ -242,7 +299,7 @@ mod tests {
         assert_eq!(light.emitted(quad.normal, Vec3::Y), Vec3::ZERO);
         assert!(
             light
-                .sample(Vec3::new(0.0, 3.0, 0.0), Vec3::Y, Vec2::splat(0.5))
+                .sample(Vec3::new(0.0, 3.0, 0.0), Vec2::splat(0.5))
                 .is_none()
         );
     }

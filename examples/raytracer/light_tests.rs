@@ -48,6 +48,7 @@ fn rendered(scene: &Scene) -> Estimate {
         max_depth: 1,
         filter: None,
         irradiance: false,
+        clamp: None,
     });
     let s = RenderSettings {
         width: 1,

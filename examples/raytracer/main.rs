@@ -16,7 +16,8 @@
 //! `cargo run --release --example raytracer -- --help` lists the options. Under
 //! `cargo test` (the example has `test = true`) run the unit tests of every module, the
 //! white furnace tests ([`furnace_tests`]), direct lighting against closed forms
-//! ([`light_tests`]) and the SH environment and irradiance shading ([`sh_tests`]).
+//! ([`light_tests`]), the SH environment and irradiance shading ([`sh_tests`]) and the
+//! shadow terminator of a coarse mesh ([`terminator_tests`]).
 
 mod aabb;
 mod bvh;
@@ -50,6 +51,8 @@ mod furnace_tests;
 mod light_tests;
 #[cfg(test)]
 mod sh_tests;
+#[cfg(test)]
+mod terminator_tests;
 
 use cli::{Command, IntegratorChoice, Options};
 use heckbert::PathFilter;
@@ -72,7 +75,7 @@ fn main() -> ExitCode {
                 eprintln!("error: {e}");
                 return ExitCode::from(2);
             }
-            match run(&options) {
+            match render::with_threads(options.threads, || run(&options)) {
                 Ok(()) => ExitCode::SUCCESS,
                 Err(e) => {
                     eprintln!("error: {e}");
@@ -123,6 +126,7 @@ fn run(o: &Options) -> Result<(), String> {
             max_depth: o.max_depth,
             filter,
             irradiance: o.irradiance,
+            clamp: o.clamp,
         }),
         IntegratorChoice::Whitted => Integrator::Whitted(Whitted {
             max_depth: o.max_depth,
@@ -137,7 +141,7 @@ fn run(o: &Options) -> Result<(), String> {
         seed: o.seed,
     };
     println!(
-        "Rendering {:?} scene{}{}, {}×{} at {} spp, {:?} integrator, max depth {}{}, {} threads",
+        "Rendering {:?} scene{}{}, {}×{} at {} spp, {:?} integrator, max depth {}{}{}, {} threads",
         o.scene,
         if o.env_sh {
             ", SH environment (order 3)"
@@ -157,6 +161,9 @@ fn run(o: &Options) -> Result<(), String> {
         o.paths
             .as_deref()
             .map_or(String::new(), |p| format!(", paths {p:?}")),
+        o.clamp.map_or(String::new(), |c| format!(
+            ", indirect light clamped to {c} (biased)"
+        )),
         rayon::current_num_threads(),
     );
     let start = Instant::now();

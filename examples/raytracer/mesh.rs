@@ -18,9 +18,11 @@ pub struct Triangle {
     pub material: MaterialId,
 }
 
-impl Surface for Triangle {
-    /// Möller & Trumbore 1997, "Fast, minimum storage ray-triangle intersection".
-    fn intersect(&self, ray: &Ray) -> Option<Hit> {
+impl Triangle {
+    /// Möller & Trumbore 1997, "Fast, minimum storage ray-triangle intersection": the ray
+    /// parameter and the barycentric coordinates `(b1, b2)` of vertices 1 and 2 of the hit.
+    #[inline]
+    fn hit_t(&self, ray: &Ray) -> Option<(f32, f32, f32)> {
         let e1 = self.p[1] - self.p[0];
         let e2 = self.p[2] - self.p[0];
         let pv = ray.dir.cross(e2);
@@ -40,30 +42,72 @@ impl Surface for Triangle {
             return None;
         }
         let t = e2.dot(qv) * inv;
-        if !ray.contains(t) {
-            return None;
-        }
-        let ng = e1.cross(e2).normalize_or_zero();
+        ray.contains(t).then_some((t, b1, b2))
+    }
+}
+
+/// The point of the smooth surface that vertex normals `n` describe over the flat triangle
+/// `v`, above its point `p` of barycentric coordinates `b`, on the side `side` (`+1` the
+/// normals' side, `−1` the other): the shadow-ray origin of Hanika 2021, "Hacking the shadow
+/// terminator" (Ray Tracing Gems II, ch. 4).
+///
+/// `p` is projected onto each vertex's tangent plane (the plane through `v_i` normal to
+/// `n_i`) where it lies below that plane, and the three projections are interpolated with
+/// the barycentric weights: `p' = p − Σ b_i min(0, (p − v_i)·n_i) n_i` (with `n_i` turned to
+/// `side`). Where the surface curves away from `side` (convex seen from there) `p'` rises
+/// above the flat triangle, up to the height of the curved surface the normals suggest;
+/// where it is flat or curves toward `side`, `p' = p`. At a vertex `p' = v_i`.
+#[inline]
+fn smooth_point(v: &[Vec3; 3], n: &[Vec3; 3], b: [f32; 3], p: Vec3, side: f32) -> Vec3 {
+    let mut lift = Vec3::ZERO;
+    for i in 0..3 {
+        let ni = n[i] * side;
+        lift -= ni * (b[i] * (p - v[i]).dot(ni).min(0.0));
+    }
+    p + lift
+}
+
+impl Surface for Triangle {
+    fn intersect(&self, ray: &Ray) -> Option<Hit> {
+        let (t, b1, b2) = self.hit_t(ray)?;
+        let ng = (self.p[1] - self.p[0])
+            .cross(self.p[2] - self.p[0])
+            .normalize_or_zero();
         if ng == Vec3::ZERO {
             return None;
         }
-        let ns = match self.n {
+        let p = ray.at(t);
+        let (ns, p_shadow, bend) = match self.n {
             Some(n) => {
-                let s = (n[0] * (1.0 - b1 - b2) + n[1] * b1 + n[2] * b2).normalize_or(ng);
+                let b = [1.0 - b1 - b2, b1, b2];
+                let raw = n[0] * b[0] + n[1] * b[1] + n[2] * b[2];
                 // Keep the shading normal in the geometric normal's hemisphere.
-                if s.dot(ng) < 0.0 { -s } else { s }
+                let agree = if raw.dot(ng) < 0.0 { -1.0 } else { 1.0 };
+                let s = (raw * agree).normalize_or(ng);
+                // The shadow-ray origin on the side the ray comes from (the side a
+                // reflection model is shaded on), in the normals' orientation.
+                let toward_ray = if ray.dir.dot(ng) < 0.0 { 1.0 } else { -1.0 };
+                let cos = n.iter().fold(1.0_f32, |c, n| c.min(agree * n.dot(ng)));
+                let bend = (1.0 - cos * cos).max(0.0).sqrt();
+                (s, smooth_point(&self.p, &n, b, p, toward_ray * agree), bend)
             }
-            None => ng,
+            None => (ng, p, 0.0),
         };
         Some(Hit {
             t,
-            p: ray.at(t),
+            p,
+            p_shadow,
+            bend,
             ng,
             ns,
-            tangent: e1,
+            tangent: self.p[1] - self.p[0],
             material: self.material,
             light: None,
         })
+    }
+
+    fn occluded(&self, ray: &Ray) -> bool {
+        self.hit_t(ray).is_some()
     }
 
     fn bounds(&self) -> Aabb {
@@ -191,6 +235,41 @@ mod tests {
             tri.intersect(&Ray::new(Vec3::new(0.8, 0.8, 1.0), -Vec3::Z))
                 .is_none()
         );
+    }
+
+    /// On a triangle cut from the unit sphere, Hanika's point rises from the flat triangle
+    /// toward the sphere seen from outside, stays on the triangle seen from inside (the
+    /// surface is concave from there), and is the vertex itself at a vertex.
+    #[test]
+    fn smooth_point_rises_toward_the_curved_surface() {
+        let v = [
+            Vec3::new(1.0, 0.0, 0.0),
+            Vec3::new(0.0, 1.0, 0.0),
+            Vec3::new(0.0, 0.0, 1.0),
+        ];
+        let b = [1.0 / 3.0; 3];
+        let p = (v[0] + v[1] + v[2]) / 3.0;
+        let lifted = smooth_point(&v, &v, b, p, 1.0);
+        assert!(
+            (lifted - p).normalize().dot(p.normalize()) > 0.999,
+            "along the normal"
+        );
+        let (flat, smooth) = (p.length(), lifted.length());
+        assert!(flat < smooth && smooth <= 1.0, "{flat} < {smooth} ≤ 1");
+        assert_eq!(smooth_point(&v, &v, b, p, -1.0), p);
+        assert_eq!(smooth_point(&v, &v, [1.0, 0.0, 0.0], v[0], 1.0), v[0]);
+        // Through `intersect`: a ray from outside gets the lifted point, its shadow-ray
+        // origin, and the bend of the normals (35.3° from the facet's: sin = √(2/3)).
+        let tri = Triangle {
+            p: v,
+            n: Some(v),
+            material: 0,
+        };
+        let h = tri.intersect(&Ray::new(p * 2.0, -p.normalize())).unwrap();
+        assert!((h.p_shadow - lifted).length() < 1e-6);
+        assert!((h.bend - (2.0_f32 / 3.0).sqrt()).abs() < 1e-6);
+        let h = tri.intersect(&Ray::new(Vec3::ZERO, p.normalize())).unwrap();
+        assert!((h.p_shadow - h.p).length() < 1e-6);
     }
 
     #[test]

@@ -75,6 +75,8 @@ impl Quad {
         let hit = Hit {
             t,
             p,
+            p_shadow: p,
+            bend: 0.0,
             ng: self.normal,
             ns: self.normal,
             tangent: self.u,

@@ -61,6 +61,25 @@ pub fn rng_for(settings: &RenderSettings, x: u32, y: u32) -> Pcg32 {
     )
 }
 
+/// Runs `work` on a pool of `threads` worker threads (`None`: one per core, or what
+/// `RAYON_NUM_THREADS` says): [`render`] inside it renders on those threads.
+///
+/// # Errors
+/// A message if the threads cannot be started, or `work`'s own.
+pub fn with_threads<T: Send>(
+    threads: Option<u32>,
+    work: impl FnOnce() -> Result<T, String> + Send,
+) -> Result<T, String> {
+    let mut pool = rayon::ThreadPoolBuilder::new();
+    if let Some(n) = threads {
+        pool = pool.num_threads(n as usize);
+    }
+    let pool = pool
+        .build()
+        .map_err(|e| format!("cannot start the worker threads: {e}"))?;
+    pool.install(work)
+}
+
 /// Renders the scene, rows in parallel, showing a progress bar when `progress` is set.
 pub fn render(
     scene: &Scene,
@@ -111,5 +130,38 @@ pub fn render(
         height: h,
         pixels,
         dropped: dropped.into_inner(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::path::PathTracer;
+    use crate::scenes::SceneChoice;
+
+    /// A render is the same on any number of threads: every pixel has its own generator.
+    #[test]
+    fn threads_do_not_change_the_image() {
+        let (scene, _) = SceneChoice::Lights.build(16.0 / 9.0).unwrap();
+        let integrator = Integrator::Path(PathTracer {
+            max_depth: 6,
+            filter: None,
+            irradiance: false,
+            clamp: None,
+        });
+        let settings = RenderSettings {
+            width: 32,
+            height: 18,
+            spp: 4,
+            seed: 9,
+        };
+        let on = |n| {
+            with_threads(Some(n), || {
+                assert_eq!(rayon::current_num_threads(), n as usize);
+                Ok(render(&scene, &integrator, &settings, false).pixels)
+            })
+            .unwrap()
+        };
+        assert_eq!(on(1), on(3));
     }
 }

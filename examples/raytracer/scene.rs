@@ -31,6 +31,12 @@ pub struct Scene {
     /// Hanrahan's quadratic form), for the irradiance shading mode; `None` without an
     /// environment.
     pub irradiance: Option<IrradianceQuadratic<Vec3>>,
+    /// The shadow terminator fix for meshes with vertex normals (on by default): shadow rays
+    /// leave reflection models from the smooth surface point [`Hit::p_shadow`] (Hanika
+    /// 2021), and light above the shading normal's horizon counts even where it is below
+    /// the flat facet's ([`ShadingPoint::light_direction`](crate::shading::ShadingPoint::light_direction)).
+    /// Off, a coarse mesh shows its facets in a hard-edged shadow along the terminator.
+    pub terminator_fix: bool,
 }
 
 impl Scene {
@@ -168,6 +174,7 @@ impl SceneBuilder {
             camera,
             ambient,
             irradiance,
+            terminator_fix: true,
         }
     }
 }

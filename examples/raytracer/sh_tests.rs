@@ -132,6 +132,7 @@ fn path(irradiance: bool) -> Integrator {
         max_depth: 8,
         filter: None,
         irradiance,
+        clamp: None,
     })
 }
 

@@ -68,6 +68,8 @@ impl Surface for Sphere {
         Some(Hit {
             t,
             p,
+            p_shadow: p,
+            bend: 0.0,
             ng: n,
             ns: n,
             // ∂p/∂φ around the y axis: the direction of the lines of latitude.

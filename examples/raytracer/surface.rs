@@ -14,6 +14,16 @@ pub struct Hit {
     pub t: f32,
     /// The hit point.
     pub p: Vec3,
+    /// Where shadow rays start: `p` itself, except on a triangle with vertex normals, where
+    /// it is `p` lifted off the flat triangle to the smooth surface the normals describe, on
+    /// the side the ray came from (Hanika 2021; see [`crate::mesh`]), so that the coarse
+    /// facets do not shadow light the shading normal sees.
+    pub p_shadow: Vec3,
+    /// The sine of the largest angle between the geometric normal and the vertex normals
+    /// (`0` without them): how far above the flat surface's horizon the shading normals'
+    /// horizon may lie, which says which shadow rays start from `p_shadow`
+    /// ([`crate::shading::ShadingPoint::shadow_origin`]).
+    pub bend: f32,
     /// The unit geometric normal, with the surface's own orientation (outward for closed
     /// surfaces): not flipped toward the ray.
     pub ng: Vec3,

@@ -73,7 +73,12 @@ impl Whitted {
             let le = scene.lights[index as usize].emitted(hit.ng, -ray.dir);
             return self.keep(le, None, labels);
         }
-        let sp = ShadingPoint::new(scene.material(hit.material), &hit, -ray.dir);
+        let sp = ShadingPoint::new(
+            scene.material(hit.material),
+            &hit,
+            -ray.dir,
+            scene.terminator_fix,
+        );
         let mut c = match scene.irradiance {
             Some(e) if self.irradiance && sp.material.lobes == Lobes::DIFFUSE_REFLECTION => {
                 sp.material.ambient * e.eval(sp.frame.z).max(Vec3::ZERO) * FRAC_1_PI
@@ -84,12 +89,16 @@ impl Whitted {
             if matches!(light, Light::Environment(_)) {
                 continue; // the ambient term stands for it
             }
-            let Some(ls) = light.sample(sp.p, sp.ng, rng.next_vec2()) else {
+            let Some(ls) = light.sample(sp.p, rng.next_vec2()) else {
                 continue;
             };
             let wi = sp.frame.to_local(ls.wi);
-            if !sp.consistent(ls.wi, wi) || scene.occluded(&ls.shadow) {
+            if sp.light_direction(ls.wi, wi).is_none() {
                 continue;
+            }
+            match ls.shadow_ray(sp.shadow_origin(ls.wi), sp.ng) {
+                Some(shadow) if !scene.occluded(&shadow) => {}
+                _ => continue,
             }
             c += sp.material.bsdf.eval(sp.wo, wi) * ls.li * (wi.z.abs() / ls.pdf);
         }

@@ -9,6 +9,7 @@ use crate::material::{Interface, Material};
 use crate::mesh::Mesh;
 use crate::quad::Quad;
 use crate::scene::{Scene, SceneBuilder};
+use crate::surface::{MaterialId, Surface};
 use lobe::bxdf::Mono;
 use lobe::bxdf::{Lambert, Microfacet, Plastic, SmoothDielectric};
 use lobe::fresnel::Conductor;
@@ -25,11 +26,33 @@ const TORUS_AT_BUILD: &str = concat!(
     "/examples/raytracer/assets/torus.obj"
 );
 
+/// Where the torus sits: the OBJ's coordinates are moved by this.
+pub const TORUS_OFFSET: Vec3 = Vec3::new(0.0, 0.25, 0.0);
+
 /// Builds the scene.
 ///
 /// # Errors
 /// A message when the OBJ file cannot be loaded or a model refuses its parameters.
 pub fn build(aspect: f32) -> Result<Scene, String> {
+    // Where the crate was built, or else relative to the working directory.
+    let path = [Path::new(TORUS_AT_BUILD), Path::new(TORUS)]
+        .into_iter()
+        .find(|p| p.exists())
+        .unwrap_or(Path::new(TORUS));
+    build_with(aspect, |material| {
+        Mesh::load_obj(path, 1.0, TORUS_OFFSET, material)
+    })
+}
+
+/// Builds the scene with the torus that `torus` makes for the material it is given (the
+/// tests swap in finer tessellations of the same surface).
+///
+/// # Errors
+/// A message when `torus` fails or a model refuses its parameters.
+pub fn build_with<S: Surface + 'static>(
+    aspect: f32,
+    torus: impl FnOnce(MaterialId) -> Result<S, String>,
+) -> Result<Scene, String> {
     let param = |e: ParamError| format!("scene parameter refused: {e}");
     let mut b = SceneBuilder::new();
     let glass = Eta::new(1.5).map_err(param)?;
@@ -53,13 +76,7 @@ pub fn build(aspect: f32) -> Result<Scene, String> {
         Lambert::new(Vec3::splat(0.5)).map_err(param)?,
     ));
 
-    // Where the crate was built, or else relative to the working directory.
-    let path = [Path::new(TORUS_AT_BUILD), Path::new(TORUS)]
-        .into_iter()
-        .find(|p| p.exists())
-        .unwrap_or(Path::new(TORUS));
-    let torus = Mesh::load_obj(path, 1.0, Vec3::new(0.0, 0.25, 0.0), red)?;
-    b.surface(torus);
+    b.surface(torus(red)?);
     b.sphere(Vec3::new(-1.6, 0.5, 0.3), 0.5, gold);
     b.sphere(Vec3::new(1.6, 0.5, 0.3), 0.5, clear);
     if let Some(q) = Quad::new(
