@@ -12,9 +12,9 @@ use crate::spectrum::Spectrum;
 use glam::{Vec2, Vec3};
 
 /// The default thickness of the layer between the interfaces, in mean free paths (pbrt-v4's).
-const DEFAULT_THICKNESS: f32 = 0.01;
+pub(crate) const DEFAULT_THICKNESS: f32 = 0.01;
 /// The default number of events a walk may have (interface hits and medium scatterings).
-const DEFAULT_MAX_DEPTH: u32 = 64;
+pub(crate) const DEFAULT_MAX_DEPTH: u32 = 64;
 /// The largest accepted thickness.
 const MAX_THICKNESS: f32 = 1e3;
 /// The largest accepted maximum depth and sample count.

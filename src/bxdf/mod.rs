@@ -123,7 +123,7 @@ mod glazed;
 mod henyey_greenstein;
 mod lambert;
 mod layer_interface;
-mod layered;
+pub(crate) mod layered;
 mod microfacet;
 mod mirror;
 mod mix;

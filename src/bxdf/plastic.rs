@@ -106,6 +106,20 @@ impl<D: TabulatedDielectric, S: Spectrum> Plastic<D, S, CompensatedMicrofacet<D,
             (reflection.e(mu) + f_ms * (1.0 - single.e(mu))).clamp(0.0, 1.0)
         })
     }
+
+    /// The coat's distribution of microfacet normals.
+    #[inline]
+    #[must_use]
+    pub fn distribution(&self) -> &D {
+        self.coat.inner().distribution()
+    }
+
+    /// The coat's relative index `η_inside / η_outside`.
+    #[inline]
+    #[must_use]
+    pub fn eta(&self) -> Eta {
+        self.coat.inner().fresnel().eta
+    }
 }
 
 impl<D, S: Spectrum, C> Plastic<D, S, C> {

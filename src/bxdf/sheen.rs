@@ -72,6 +72,8 @@ const FIT_1: [f32; 5] = [21.5473, 3.82987, 0.19823, -1.97760, -4.32054];
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Sheen<S = f32> {
     color: S,
+    /// `r`, as given.
+    roughness: f32,
     /// The exponent `1/r` of `sin θh`.
     inv_r: f32,
     /// `(2 + 1/r) / (2π)`.
@@ -100,6 +102,7 @@ impl<S: Spectrum> Sheen<S> {
         let inv_r = 1.0 / roughness;
         let mut sheen = Self {
             color,
+            roughness,
             inv_r,
             d_scale: (2.0 + inv_r) / (2.0 * PI),
             fit,
@@ -197,6 +200,20 @@ impl<S: Spectrum> Sheen<S> {
     #[inline(always)]
     fn table_x(cos_theta: f32) -> f32 {
         crate::math::safe_sqrt(cos_theta.clamp(0.0, 1.0)) * (TABLE - 1) as f32
+    }
+
+    /// The sheen's colour `c`.
+    #[inline]
+    #[must_use]
+    pub fn color(&self) -> S {
+        self.color
+    }
+
+    /// The roughness `r`, as given to [`new`](Self::new).
+    #[inline]
+    #[must_use]
+    pub fn roughness(&self) -> f32 {
+        self.roughness
     }
 
     /// The directional albedo `c E(cos θo)` from the table (linear interpolation), for

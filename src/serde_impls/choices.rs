@@ -1,7 +1,7 @@
 //! The closed choices a model is built with, as `snake_case` names: [`Masking`],
-//! [`BeckmannMasking`], [`TransportMode`] and [`BlinnPhongForm`].
+//! [`BeckmannMasking`], [`TransportMode`], [`BlinnPhongForm`] and [`Compensation`].
 
-use crate::bxdf::{BlinnPhongForm, TransportMode};
+use crate::bxdf::{BlinnPhongForm, Compensation, TransportMode};
 use crate::microfacet::{BeckmannMasking, Masking};
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
@@ -57,5 +57,12 @@ by_name!(
     BlinnPhongFormDef {
         Modified,
         Normalized
+    }
+);
+by_name!(
+    Compensation = "Compensation",
+    CompensationDef {
+        KullaConty,
+        Turquin
     }
 );

@@ -1,13 +1,14 @@
-//! The coated models: [`Glazed`] and [`Plastic`], as the base's reflectance and the coat's
-//! index (and, for the plastic, its distribution). What the constructors compute from them
+//! The coated models: [`Glazed`], [`Plastic`] and [`CompensatedPlastic`], as the base's
+//! reflectance and the coat's index (and, for the plastics, its distribution). What the constructors compute from them
 //! (the coat's average Fresnel, the plastic's table of coat albedos) is not written: the
 //! constructor computes it again on the way in.
 
 use super::refused;
-use crate::bxdf::{Glazed, Plastic};
+use crate::bxdf::{CompensatedPlastic, Glazed, Plastic};
 use crate::microfacet::NormalDistribution;
 use crate::param::Eta;
 use crate::spectrum::Spectrum;
+use crate::tables::TabulatedDielectric;
 use serde::de::{Deserialize, Deserializer};
 use serde::ser::{Serialize, Serializer};
 
@@ -69,5 +70,32 @@ where
     fn deserialize<De: Deserializer<'de>>(deserializer: De) -> Result<Self, De::Error> {
         let r = PlasticRepr::<S, D>::deserialize(deserializer)?;
         Plastic::new(r.reflectance, r.distribution, r.eta).map_err(refused)
+    }
+}
+
+/// [`CompensatedPlastic`] on the wire: as [`Plastic`]; the type says the coat is compensated.
+impl<D, S> Serialize for CompensatedPlastic<D, S>
+where
+    D: TabulatedDielectric + Serialize,
+    S: Spectrum + Serialize,
+{
+    fn serialize<Se: Serializer>(&self, serializer: Se) -> Result<Se::Ok, Se::Error> {
+        PlasticRepr {
+            reflectance: self.reflectance(),
+            distribution: self.distribution(),
+            eta: self.eta(),
+        }
+        .serialize(serializer)
+    }
+}
+
+impl<'de, D, S> Deserialize<'de> for CompensatedPlastic<D, S>
+where
+    D: TabulatedDielectric + Deserialize<'de>,
+    S: Spectrum + Deserialize<'de>,
+{
+    fn deserialize<De: Deserializer<'de>>(deserializer: De) -> Result<Self, De::Error> {
+        let r = PlasticRepr::<S, D>::deserialize(deserializer)?;
+        Plastic::compensated(r.reflectance, r.distribution, r.eta).map_err(refused)
     }
 }

@@ -1,9 +1,11 @@
 //! The diffuse models: [`Lambert`], [`OrenNayar`], [`EnergyPreservingOrenNayar`] and
-//! [`DisneyDiffuse`], as their constructors' parameters. Oren-Nayar's `A`, `B` and EON's
+//! [`DisneyDiffuse`], and [`DiffuseTransmission`], as their constructors' parameters. Oren-Nayar's `A`, `B` and EON's
 //! single- and multiple-scattering factors are computed again on the way in.
 
 use super::{is_default, refused};
-use crate::bxdf::{DisneyDiffuse, EnergyPreservingOrenNayar, Lambert, OrenNayar};
+use crate::bxdf::{
+    DiffuseTransmission, DisneyDiffuse, EnergyPreservingOrenNayar, Lambert, OrenNayar,
+};
 use crate::param::Roughness;
 use crate::spectrum::Spectrum;
 use serde::de::{Deserialize, Deserializer};
@@ -114,5 +116,30 @@ impl<'de, S: Spectrum + Deserialize<'de>> Deserialize<'de> for DisneyDiffuse<S> 
     fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
         let r = DisneyDiffuseRepr::<S>::deserialize(deserializer)?;
         DisneyDiffuse::new(r.reflectance, r.roughness).map_err(refused)
+    }
+}
+
+/// [`DiffuseTransmission`] on the wire: `{ "reflectance": …, "transmittance": … }`.
+#[derive(serde::Serialize, serde::Deserialize)]
+#[serde(rename = "DiffuseTransmission", deny_unknown_fields)]
+struct DiffuseTransmissionRepr<S> {
+    reflectance: S,
+    transmittance: S,
+}
+
+impl<S: Spectrum + Serialize> Serialize for DiffuseTransmission<S> {
+    fn serialize<Se: Serializer>(&self, serializer: Se) -> Result<Se::Ok, Se::Error> {
+        DiffuseTransmissionRepr {
+            reflectance: self.reflectance(),
+            transmittance: self.transmittance(),
+        }
+        .serialize(serializer)
+    }
+}
+
+impl<'de, S: Spectrum + Deserialize<'de>> Deserialize<'de> for DiffuseTransmission<S> {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        let r = DiffuseTransmissionRepr::<S>::deserialize(deserializer)?;
+        DiffuseTransmission::new(r.reflectance, r.transmittance).map_err(refused)
     }
 }

@@ -1,9 +1,10 @@
-//! The diffuse-plus-glossy models: [`Phong`] and [`BlinnPhong`], as `kd`, `ks`, the exponent
-//! (and Blinn-Phong's form). The lobes' normalisations and sampling weights are computed
-//! again on the way in.
+//! The glossy models: [`Phong`] and [`BlinnPhong`], as `kd`, `ks`, the exponent (and
+//! Blinn-Phong's form), and [`Sheen`], as its colour and roughness. The lobes'
+//! normalisations, sampling weights and the sheen's albedo table are computed again on the
+//! way in.
 
 use super::{is_default, refused};
-use crate::bxdf::{BlinnPhong, BlinnPhongForm, Phong};
+use crate::bxdf::{BlinnPhong, BlinnPhongForm, Phong, Sheen};
 use crate::spectrum::Spectrum;
 use serde::de::{Deserialize, Deserializer};
 use serde::ser::{Serialize, Serializer};
@@ -63,5 +64,30 @@ impl<'de, S: Spectrum + Deserialize<'de>> Deserialize<'de> for BlinnPhong<S> {
     fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
         let r = BlinnPhongRepr::<S>::deserialize(deserializer)?;
         BlinnPhong::new(r.kd, r.ks, r.exponent, r.form).map_err(refused)
+    }
+}
+
+/// [`Sheen`] on the wire: `{ "color": …, "roughness": 0.5 }`.
+#[derive(serde::Serialize, serde::Deserialize)]
+#[serde(rename = "Sheen", deny_unknown_fields)]
+struct SheenRepr<S> {
+    color: S,
+    roughness: f32,
+}
+
+impl<S: Spectrum + Serialize> Serialize for Sheen<S> {
+    fn serialize<Se: Serializer>(&self, serializer: Se) -> Result<Se::Ok, Se::Error> {
+        SheenRepr {
+            color: self.color(),
+            roughness: self.roughness(),
+        }
+        .serialize(serializer)
+    }
+}
+
+impl<'de, S: Spectrum + Deserialize<'de>> Deserialize<'de> for Sheen<S> {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        let r = SheenRepr::<S>::deserialize(deserializer)?;
+        Sheen::new(r.color, r.roughness).map_err(refused)
     }
 }

@@ -23,7 +23,9 @@
 //!   misspelt field is an error, never a silent default.
 //! * **Defaults may be left out**, and are left out on the way out: `masking` (height-correlated
 //!   Smith), `mode` (radiance), GGX's `bounded_reflection` (on), Beckmann's `masking` (exact),
-//!   `exact_smith` and `exact_albedo` (off), Blinn-Phong's `form` (normalised).
+//!   `exact_smith` and `exact_albedo` (off), Blinn-Phong's `form` (normalised), the
+//!   `compensation` (Kulla & Conty's), a layered model's `thickness` (0.01), `medium` (none),
+//!   `max_depth` (64) and `samples` (1).
 //! * **Spectra** are one number for `f32`, an array of three for RGB [`Vec3`](crate::Vec3),
 //!   of four for [`Vec4`](crate::Vec4) (glam's own representation). **Choices** are `snake_case`
 //!   names.
@@ -61,6 +63,15 @@
 //! | [`ThinDielectric`](crate::bxdf::ThinDielectric) | `{"eta": 1.5}` |
 //! | [`Glazed`](crate::bxdf::Glazed) | `{"reflectance": [0.7, 0.1, 0.1], "eta": 1.5}` |
 //! | [`Plastic`](crate::bxdf::Plastic) | `{"reflectance": [0.7, 0.1, 0.1], "distribution": {"alpha": 0.1}, "eta": 1.5}` |
+//! | [`CompensatedPlastic`](crate::bxdf::CompensatedPlastic) | as [`Plastic`](crate::bxdf::Plastic) (the type says the coat is compensated) |
+//! | [`CompensatedMicrofacet`](crate::bxdf::CompensatedMicrofacet) | `{"distribution": {"alpha": 0.5}, "fresnel": {"f0": 1.0}}`; `"compensation": "turquin"` |
+//! | [`CompensatedDielectric`](crate::bxdf::CompensatedDielectric) | `{"distribution": {"alpha": 0.3}, "eta": 1.5}`; `"mode": "importance"` |
+//! | [`Compensation`](crate::bxdf::Compensation) | `"kulla_conty"`, `"turquin"` |
+//! | [`DiffuseTransmission`](crate::bxdf::DiffuseTransmission) | `{"reflectance": [0.3, 0.5, 0.1], "transmittance": [0.2, 0.4, 0.1]}` |
+//! | [`Sheen`](crate::bxdf::Sheen) | `{"color": [0.9, 0.2, 0.3], "roughness": 0.5}` |
+//! | [`Mix`](crate::bxdf::Mix) | `{"first": …, "second": …, "weight": 0.3}` (the weight of `second`) |
+//! | [`TwoSided`](crate::bxdf::TwoSided) | `{"inner": …}` |
+//! | [`Layered`](crate::bxdf::Layered), `CoatedDiffuse`, `CoatedConductor` | `{"top": …, "bottom": …}`; `"thickness": 0.1`, `"medium": {"albedo": [0.5, 0.5, 0.5], "g": 0.3}`, `"max_depth": 32`, `"samples": 4` |
 //! | [`Mono`](crate::bxdf::Mono) | the wrapped model's, unchanged |
 //!
 //! (After the `;`: an optional field, shown with a value other than its default.)
@@ -68,6 +79,9 @@
 //! [`BlinnPhongNdf`](crate::microfacet::BlinnPhongNdf)'s two constructors round differently,
 //! so it is written as whichever of `alpha` and `exponent` builds the very same value again
 //! (the shorter number when both do). Every value comes back equal (`==`) to the one written.
+//! A compensated model built with an albedo table of its own (`with_albedo`) is the one value
+//! that cannot be written: serialising it is an error, since a file names the crate's tables
+//! only.
 //!
 //! ## A material list
 //!
@@ -149,6 +163,8 @@
 
 mod choices;
 mod coated;
+mod compensated;
+mod composition;
 mod diffuse;
 mod distributions;
 mod fresnel;
