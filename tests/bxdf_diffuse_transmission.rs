@@ -4,21 +4,14 @@
 mod common;
 
 use lobe::bxdf::{Bxdf, DiffuseTransmission};
-use lobe::verify::{Config, albedo, check_bxdf, sidak};
+use lobe::verify::{Config, albedo, check_bxdf};
 use lobe::{Spectrum, Vec3};
 
 /// Statistical tests in this file: 2 harness runs, 3 sheets × 4 directions × 2 estimators.
 const TESTS: usize = 2 + 24;
 
 fn config() -> Config {
-    Config {
-        albedo_samples: 50_000,
-        chi2_samples: 200_000,
-        pairs: 5_000,
-        consistency_samples: 5_000,
-        significance: sidak(0.01, TESTS),
-        ..Config::default()
-    }
+    common::combinator_budget(50_000, TESTS)
 }
 
 #[test]

@@ -8,7 +8,7 @@ mod common;
 use lobe::bxdf::{Bxdf, Lambert, Microfacet, Mix, Phong, TwoSided};
 use lobe::fresnel::Schlick;
 use lobe::microfacet::{Ggx, Masking};
-use lobe::verify::{Config, Pcg32, albedo, check_bxdf, sidak};
+use lobe::verify::{Config, Pcg32, albedo, check_bxdf};
 use lobe::{Alpha, Vec3};
 
 /// Statistical tests in this file: 3 harness runs and 3 × 2 albedo comparisons.
@@ -23,14 +23,7 @@ fn glossy() -> Microfacet<Ggx, Schlick<f32>> {
 }
 
 fn config() -> Config {
-    Config {
-        albedo_samples: 50_000,
-        chi2_samples: 200_000,
-        pairs: 5_000,
-        consistency_samples: 5_000,
-        significance: sidak(0.01, TESTS),
-        ..Config::default()
-    }
+    common::combinator_budget(50_000, TESTS)
 }
 
 #[test]

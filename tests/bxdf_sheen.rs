@@ -9,21 +9,14 @@ mod common;
 
 use core::f64::consts::PI;
 use lobe::bxdf::{Bxdf, Sheen};
-use lobe::verify::{Config, Law, albedo_sampled, check_bxdf, sidak};
+use lobe::verify::{Config, Law, albedo_sampled, check_bxdf};
 use lobe::{Spectrum, Vec3};
 
 /// Statistical tests in this file: 4 harness runs, 4 roughnesses × 7 albedo angles.
 const TESTS: usize = 4 + 28;
 
 fn config() -> Config {
-    Config {
-        albedo_samples: 100_000,
-        chi2_samples: 200_000,
-        pairs: 5_000,
-        consistency_samples: 5_000,
-        significance: sidak(0.01, TESTS),
-        ..Config::default()
-    }
+    common::combinator_budget(100_000, TESTS)
 }
 
 /// `2π ∫₀¹ g(μ) dμ` by the midpoint rule on `n` panels.

@@ -161,6 +161,26 @@ fn split_albedo(
     )
 }
 
+/// One furnace point: the compensated model's albedo at `wo` (by quadrature, and by its own
+/// sampler with `sampled = (samples, seed)` when `samples > 0`) beside the single-scattering
+/// model's.
+fn furnace_point(
+    label: String,
+    compensated: &dyn Bxdf<Spectrum = f32>,
+    single: &dyn Bxdf<Spectrum = f32>,
+    wo: Vec3,
+    (samples, seed): (usize, u64),
+) -> Furnace {
+    let (e, ss) = split_albedo(compensated, single, wo);
+    Furnace {
+        label,
+        compensated: e,
+        sampled: (samples > 0)
+            .then(|| albedo_sampled(compensated, wo, &BxdfCheck { samples, seed })),
+        single: ss,
+    }
+}
+
 /// Asserts that every measurement lies inside `1 ± bar` with its `k`-sigma interval, and
 /// that the model's own sampler agrees with the split measurement where both were taken,
 /// printing them all; returns how many lie outside (for the fault checks) without asserting
@@ -234,23 +254,13 @@ fn conductor_furnace<D: TabulatedAlbedo + Copy>(
         );
         let compensated = single.with_energy_compensation().unwrap();
         for &theta in thetas {
-            let wo = dir(theta);
-            let (e, ss) = split_albedo(&compensated, &single, wo);
-            rows.push(Furnace {
-                label: format!("α = {alpha:<4} θo = {theta:>2}°"),
-                compensated: e,
-                sampled: (sampled > 0).then(|| {
-                    albedo_sampled(
-                        &compensated,
-                        wo,
-                        &BxdfCheck {
-                            samples: sampled,
-                            seed: 29,
-                        },
-                    )
-                }),
-                single: ss,
-            });
+            rows.push(furnace_point(
+                format!("α = {alpha:<4} θo = {theta:>2}°"),
+                &compensated,
+                &single,
+                dir(theta),
+                (sampled, 29),
+            ));
         }
     }
     rows
@@ -394,23 +404,13 @@ fn dielectric_furnace<D: TabulatedDielectric + Copy>(
                 RoughDielectric::new(dist(a(alpha)), eta(n)).with_mode(TransportMode::Importance);
             let c = single.with_energy_compensation().unwrap();
             for theta in DIELECTRIC_THETAS {
-                let wo = dir(theta);
-                let (e, ss) = split_albedo(&c, &single, wo);
-                rows.push(Furnace {
-                    label: format!("η = {n:<4} α = {alpha:<4} θo = {theta:>3}°"),
-                    compensated: e,
-                    sampled: (sampled > 0).then(|| {
-                        albedo_sampled(
-                            &c,
-                            wo,
-                            &BxdfCheck {
-                                samples: sampled,
-                                seed: 37,
-                            },
-                        )
-                    }),
-                    single: ss,
-                });
+                rows.push(furnace_point(
+                    format!("η = {n:<4} α = {alpha:<4} θo = {theta:>3}°"),
+                    &c,
+                    &single,
+                    dir(theta),
+                    (sampled, 37),
+                ));
             }
         }
     }

@@ -24,7 +24,7 @@
 mod common;
 
 use core::f32::consts::PI;
-use lobe::bxdf::{Bxdf, CoatedConductor, CoatedDiffuse, Layered};
+use lobe::bxdf::{Bxdf, CoatedConductor, CoatedDiffuse, LayerInterface, Layered};
 use lobe::microfacet::Ggx;
 use lobe::verify::{Accumulator, Config, Estimate, Pcg32, albedo};
 use lobe::{Alpha, Eta, Vec2, Vec3, metals};
@@ -41,6 +41,25 @@ struct Stack<'a> {
     /// Single-scattering albedo and HG asymmetry of the medium, if it scatters.
     medium: Option<(f32, f32)>,
     max_depth: u32,
+}
+
+impl<'a> Stack<'a> {
+    /// The stack `model` describes: its layers, thickness, medium and depth, to walk
+    /// independently of its own walk.
+    fn of<T, B>(model: &'a Layered<T, B>) -> Self
+    where
+        T: LayerInterface + Bxdf<Spectrum = f32>,
+        B: Bxdf<Spectrum = f32>,
+    {
+        let (albedo, g) = model.medium();
+        Stack {
+            top: model.top(),
+            bottom: model.bottom(),
+            thickness: model.thickness(),
+            medium: (albedo > 0.0).then_some((albedo, g)),
+            max_depth: model.max_depth(),
+        }
+    }
 }
 
 /// Henyey-Greenstein, written from the formula: `(1 − g²) / (4π (1 + g² + 2 g cos)^{3/2})`
@@ -208,13 +227,7 @@ fn coated_diffuse_matches_the_brute_force_walk() {
     let k = common::k_sigma(0.01, TESTS);
     let eta = Eta::new(1.5).unwrap();
     let model = CoatedDiffuse::coated_diffuse(0.8_f32, ggx(0.3), eta).unwrap();
-    let stack = Stack {
-        top: model.top(),
-        bottom: model.bottom(),
-        thickness: model.thickness(),
-        medium: None,
-        max_depth: model.max_depth(),
-    };
+    let stack = Stack::of(&model);
     compare("CoatedDiffuse α=0.3 η=1.5 ρ=0.8", &model, &stack, k, 1);
 }
 
@@ -225,13 +238,7 @@ fn coated_conductor_matches_the_brute_force_walk() {
     let red = lobe::ComplexIor::new(copper.eta().x, copper.k().x).unwrap();
     let model =
         CoatedConductor::coated_conductor(ggx(0.1), Eta::new(1.5).unwrap(), ggx(0.3), red).unwrap();
-    let stack = Stack {
-        top: model.top(),
-        bottom: model.bottom(),
-        thickness: model.thickness(),
-        medium: None,
-        max_depth: model.max_depth(),
-    };
+    let stack = Stack::of(&model);
     compare(
         "CoatedConductor coat α=0.1, copper (red) α=0.3",
         &model,
@@ -250,13 +257,7 @@ fn a_scattering_layer_matches_the_brute_force_walk() {
         .unwrap()
         .with_medium(0.9, 0.4)
         .unwrap();
-    let stack = Stack {
-        top: model.top(),
-        bottom: model.bottom(),
-        thickness: 0.5,
-        medium: Some((0.9, 0.4)),
-        max_depth: model.max_depth(),
-    };
+    let stack = Stack::of(&model);
     compare(
         "CoatedDiffuse with a medium (albedo 0.9, g 0.4, 0.5 mfp)",
         &model,
@@ -278,13 +279,7 @@ fn a_short_walk_counts_the_same_paths() {
     .unwrap()
     .with_max_depth(3)
     .unwrap();
-    let stack = Stack {
-        top: model.top(),
-        bottom: model.bottom(),
-        thickness: 0.0,
-        medium: None,
-        max_depth: 3,
-    };
+    let stack = Stack::of(&model);
     compare(
         "rough η=2 coat over white Lambert, max depth 3",
         &model,

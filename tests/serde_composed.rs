@@ -5,9 +5,9 @@
 
 mod common;
 
-use common::wire::{assert_refused, assert_wire, round_trip};
+use common::wire::{assert_refused, assert_same_values, assert_wire, round_trip};
 use lobe::bxdf::{
-    Bxdf, CoatedConductor, CoatedDiffuse, CompensatedDielectric, CompensatedMicrofacet,
+    CoatedConductor, CoatedDiffuse, CompensatedDielectric, CompensatedMicrofacet,
     CompensatedPlastic, Compensation, DiffuseTransmission, Lambert, Layered, Microfacet, Mix,
     Plastic, RoughDielectric, Sheen, TransportMode, TwoSided,
 };
@@ -15,8 +15,7 @@ use lobe::fresnel::{Conductor, Schlick};
 use lobe::metals;
 use lobe::microfacet::{Beckmann, Ggx, Masking};
 use lobe::tables::TabulatedAlbedo;
-use lobe::{Alpha, Eta, Vec2, Vec3, Vec4};
-use std::fmt::Debug;
+use lobe::{Alpha, Eta, Vec3, Vec4};
 
 fn alpha(a: f32) -> Alpha {
     Alpha::new(a).unwrap()
@@ -28,23 +27,6 @@ fn eta(e: f32) -> Eta {
 
 fn ggx(a: f32) -> Ggx {
     Ggx::isotropic(alpha(a))
-}
-
-/// `read` and `built` give the same `eval`, `pdf` and `sample`, to the bit (the layered
-/// models' stochastic estimates are seeded by their inputs, so they too).
-fn assert_same_values<B: Bxdf + Debug>(read: &B, built: &B) {
-    let wo = Vec3::new(0.3, -0.2, 0.9).normalize();
-    for wi in [
-        Vec3::new(-0.4, 0.1, 0.8).normalize(),
-        Vec3::new(0.1, 0.5, -0.7).normalize(),
-        Vec3::Z,
-    ] {
-        assert_eq!(read.eval(wo, wi), built.eval(wo, wi), "{built:?}");
-        assert_eq!(read.pdf(wo, wi), built.pdf(wo, wi), "{built:?}");
-    }
-    let s = read.sample(wo, Vec2::new(0.3, 0.6), 0.4);
-    assert_eq!(s, built.sample(wo, Vec2::new(0.3, 0.6), 0.4), "{built:?}");
-    assert!(s.is_some(), "{built:?}");
 }
 
 #[test]

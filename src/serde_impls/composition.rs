@@ -10,62 +10,22 @@ use crate::spectrum::Spectrum;
 use serde::de::{Deserialize, Deserializer};
 use serde::ser::{Serialize, Serializer};
 
-/// [`Mix`] on the wire: `{ "first": …, "second": …, "weight": 0.3 }`, the weight of the
-/// second. Serialised with `A = &A` and `B = &B`.
-#[derive(serde::Serialize, serde::Deserialize)]
-#[serde(rename = "Mix", deny_unknown_fields)]
-struct MixRepr<A, B> {
-    first: A,
-    second: B,
-    weight: f32,
+wire! {
+    /// [`Mix`] on the wire: `{ "first": …, "second": …, "weight": 0.3 }`, the weight of the
+    /// second.
+    impl[A: Prepare + Clone, B: Prepare<Spectrum = A::Spectrum> + Clone] Mix<A, B> as "Mix"
+        MixRepr<A, B> |m| {
+        first: A = m.first().clone(),
+        second: B = m.second().clone(),
+        weight: f32 = m.weight(),
+    } via |r| Mix::new(r.first, r.second, r.weight)
 }
 
-impl<A, B> Serialize for Mix<A, B>
-where
-    A: Prepare + Serialize,
-    B: Prepare<Spectrum = A::Spectrum> + Serialize,
-{
-    fn serialize<Se: Serializer>(&self, serializer: Se) -> Result<Se::Ok, Se::Error> {
-        MixRepr {
-            first: self.first(),
-            second: self.second(),
-            weight: self.weight(),
-        }
-        .serialize(serializer)
-    }
-}
-
-impl<'de, A, B> Deserialize<'de> for Mix<A, B>
-where
-    A: Prepare + Deserialize<'de>,
-    B: Prepare<Spectrum = A::Spectrum> + Deserialize<'de>,
-{
-    fn deserialize<De: Deserializer<'de>>(deserializer: De) -> Result<Self, De::Error> {
-        let r = MixRepr::<A, B>::deserialize(deserializer)?;
-        Mix::new(r.first, r.second, r.weight).map_err(refused)
-    }
-}
-
-/// [`TwoSided`] on the wire: `{ "inner": … }`, the one-sided model.
-#[derive(serde::Serialize, serde::Deserialize)]
-#[serde(rename = "TwoSided", deny_unknown_fields)]
-struct TwoSidedRepr<B> {
-    inner: B,
-}
-
-impl<B: Prepare + Serialize> Serialize for TwoSided<B> {
-    fn serialize<Se: Serializer>(&self, serializer: Se) -> Result<Se::Ok, Se::Error> {
-        TwoSidedRepr {
-            inner: self.inner(),
-        }
-        .serialize(serializer)
-    }
-}
-
-impl<'de, B: Prepare + Deserialize<'de>> Deserialize<'de> for TwoSided<B> {
-    fn deserialize<De: Deserializer<'de>>(deserializer: De) -> Result<Self, De::Error> {
-        TwoSidedRepr::<B>::deserialize(deserializer).map(|r| TwoSided::new(r.inner))
-    }
+wire! {
+    /// [`TwoSided`] on the wire: `{ "inner": … }`, the one-sided model.
+    impl[B: Prepare + Clone] TwoSided<B> as "TwoSided" TwoSidedRepr<B> |m| {
+        inner: B = m.inner().clone(),
+    } via |r| Ok(TwoSided::new(r.inner))
 }
 
 /// A layered model's medium on the wire: `{ "albedo": …, "g": 0.3 }`.

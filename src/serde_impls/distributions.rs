@@ -142,31 +142,13 @@ impl<'de> Deserialize<'de> for Beckmann {
     }
 }
 
-/// [`Gtr`] on the wire: `{ "alpha": 0.1, "gamma": 1 }`. The Smith table is not written: the
-/// constructor tabulates it again.
-#[derive(serde::Serialize, serde::Deserialize)]
-#[serde(rename = "Gtr", deny_unknown_fields)]
-struct GtrRepr {
-    alpha: f32,
-    gamma: f32,
-}
-
-impl Serialize for Gtr {
-    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
-        GtrRepr {
-            alpha: self.alpha(),
-            gamma: self.gamma(),
-        }
-        .serialize(serializer)
-    }
-}
-
-impl<'de> Deserialize<'de> for Gtr {
-    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-        let r = GtrRepr::deserialize(deserializer)?;
-        let alpha = Alpha::new(r.alpha).map_err(refused)?;
-        Gtr::new(alpha, r.gamma).map_err(refused)
-    }
+wire! {
+    /// [`Gtr`] on the wire: `{ "alpha": 0.1, "gamma": 1 }`. The Smith table is not written:
+    /// the constructor tabulates it again.
+    impl[] Gtr as "Gtr" GtrRepr |m| {
+        alpha: f32 = m.alpha(),
+        gamma: f32 = m.gamma(),
+    } via |r| Alpha::new(r.alpha).and_then(|alpha| Gtr::new(alpha, r.gamma))
 }
 
 /// [`BlinnPhongNdf`] on the wire: `{ "alpha": 0.3 }` or `{ "exponent": 20 }` (one of the

@@ -161,6 +161,62 @@
 //! ```
 #![cfg_attr(docsrs, doc(cfg(feature = "serde")))]
 
+/// Implements `Serialize` and `Deserialize` for a model through its wire struct, which it
+/// also defines: the constructor's parameters as the struct's fields (with their serde
+/// attributes), each read from the model `m` by a getter, and the constructor that builds the
+/// model again from the struct `r`, its refusal (a [`ParamError`]) the deserialiser's error.
+///
+/// ```text
+/// wire! {
+///     /// [`Lambert`] on the wire: `{ "reflectance": [0.8, 0.8, 0.8] }`.
+///     impl[S: Spectrum] Lambert<S> as "Lambert" LambertRepr<S> |m| {
+///         reflectance: S = m.albedo(),
+///     } via |r| Lambert::new(r.reflectance)
+/// }
+/// ```
+macro_rules! wire {
+    (
+        $(#[$attr:meta])*
+        impl[$($gen:tt)*] $ty:ty as $name:literal $repr:ident $(<$($p:ident),*>)? |$m:ident| {
+            $($(#[$fattr:meta])* $field:ident: $fty:ty = $get:expr),* $(,)?
+        } via |$r:ident| $make:expr
+    ) => {
+        $(#[$attr])*
+        #[derive(serde::Serialize, serde::Deserialize)]
+        #[serde(rename = $name, deny_unknown_fields)]
+        struct $repr$(<$($p),*>)? {
+            $($(#[$fattr])* $field: $fty,)*
+        }
+
+        impl<$($gen)*> serde::Serialize for $ty
+        where
+            $repr$(<$($p),*>)?: serde::Serialize,
+        {
+            fn serialize<Ser: serde::Serializer>(
+                &self,
+                serializer: Ser,
+            ) -> Result<Ser::Ok, Ser::Error> {
+                let $m = self;
+                let repr = $repr { $($field: $get),* };
+                serde::Serialize::serialize(&repr, serializer)
+            }
+        }
+
+        impl<'de, $($gen)*> serde::Deserialize<'de> for $ty
+        where
+            $repr$(<$($p),*>)?: serde::Deserialize<'de>,
+        {
+            fn deserialize<De: serde::Deserializer<'de>>(
+                deserializer: De,
+            ) -> Result<Self, De::Error> {
+                let $r = <$repr$(<$($p),*>)? as serde::Deserialize>::deserialize(deserializer)?;
+                let made: Result<Self, $crate::param::ParamError> = $make;
+                made.map_err(super::refused)
+            }
+        }
+    };
+}
+
 mod choices;
 mod coated;
 mod compensated;

@@ -21,6 +21,20 @@ pub fn proptest_config(cases: u32) -> Config {
     }
 }
 
+/// The law budget of the combinator tests (`bxdf_mix`, `bxdf_diffuse_transmission`,
+/// `bxdf_sheen`): `albedo_samples` per albedo, 200 000 chi-square samples, 5 000 pairs and
+/// consistency samples, at the Šidák-corrected significance of `n_tests` tests.
+pub fn combinator_budget(albedo_samples: usize, n_tests: usize) -> lobe::verify::Config {
+    lobe::verify::Config {
+        albedo_samples,
+        chi2_samples: 200_000,
+        pairs: 5_000,
+        consistency_samples: 5_000,
+        significance: lobe::verify::sidak(0.01, n_tests),
+        ..lobe::verify::Config::default()
+    }
+}
+
 /// The two-sided normal quantile `k` such that each of `n_tests` estimates falls outside
 /// `±k σ` with probability `sidak(family_alpha, n_tests)`: the Šidák-corrected "k sigma",
 /// by the harness's own [`two_sided_quantile`](lobe::verify::two_sided_quantile).
