@@ -3,7 +3,7 @@
 
 use super::{At, BxdfSample, Lobes, Microfacet, Prepare, both_above};
 use crate::fresnel::{Fresnel, FresnelAverage};
-use crate::microfacet::{Masking, NormalDistribution, View};
+use crate::microfacet::{NormalDistribution, View};
 use crate::param::ParamError;
 use crate::sampling::{cosine_hemisphere, cosine_hemisphere_pdf};
 use crate::spectrum::Spectrum;
@@ -127,20 +127,7 @@ impl<D: TabulatedAlbedo, F: FresnelAverage> CompensatedMicrofacet<D, F> {
     /// [`ParamError`] naming `masking` for masking other than height-correlated (the tables'),
     /// or `alpha (compensated)` for a width above 1.
     pub fn new(inner: Microfacet<D, F>, compensation: Compensation) -> Result<Self, ParamError> {
-        match inner.masking() {
-            Masking::HeightCorrelated => {}
-            other => {
-                return Err(ParamError::new(
-                    "masking (0 height-correlated, 1 separable, 2 V-cavity)",
-                    if other == Masking::Separable {
-                        1.0
-                    } else {
-                        2.0
-                    },
-                    "{0}",
-                ));
-            }
-        }
+        crate::tables::tabulated_masking(inner.masking())?;
         let albedo = inner.distribution().conductor_albedo()?;
         Ok(Self::with_albedo(inner, albedo, compensation))
     }

@@ -3,7 +3,7 @@
 use super::compensated::CompensatedState;
 use super::{At, BxdfSample, Lobes, Prepare, RoughDielectric, TransportMode};
 use crate::fresnel::{Dielectric, FresnelAverage};
-use crate::microfacet::{Masking, NormalDistribution, View};
+use crate::microfacet::{NormalDistribution, View};
 use crate::param::ParamError;
 use crate::sampling::cosine_hemisphere;
 use crate::tables::{AlbedoRow, DielectricAlbedo, TabulatedDielectric};
@@ -111,20 +111,7 @@ impl<D: TabulatedDielectric> CompensatedDielectric<D> {
     /// `alpha (compensated)` for a width above 1, or `eta (compensated)` for an index
     /// outside the tables.
     pub fn new(inner: RoughDielectric<D>) -> Result<Self, ParamError> {
-        match inner.masking() {
-            Masking::HeightCorrelated => {}
-            other => {
-                return Err(ParamError::new(
-                    "masking (0 height-correlated, 1 separable, 2 V-cavity)",
-                    if other == Masking::Separable {
-                        1.0
-                    } else {
-                        2.0
-                    },
-                    "{0}",
-                ));
-            }
-        }
+        crate::tables::tabulated_masking(inner.masking())?;
         let albedo = inner.distribution().dielectric_albedo(inner.eta())?;
         Ok(Self::with_albedo(inner, albedo))
     }

@@ -62,7 +62,7 @@ pub use ggx_dielectric::{
 };
 pub use row::AlbedoRow;
 
-use crate::microfacet::{Beckmann, Ggx, NormalDistribution};
+use crate::microfacet::{Beckmann, Ggx, Masking, NormalDistribution};
 use crate::param::{Eta, ParamError};
 
 /// Nodes in `μ` of the conductor tables and of every [`AlbedoRow`].
@@ -204,6 +204,23 @@ pub trait TabulatedAlbedo: NormalDistribution {
     /// # Errors
     /// [`ParamError`] naming `alpha (compensated)` for a width above 1.
     fn conductor_albedo(&self) -> Result<AlbedoRow, ParamError>;
+}
+
+/// `Ok` for the masking the tables hold (height-correlated Smith); for any other, the
+/// [`ParamError`] naming `masking` that the compensated models' constructors return.
+pub(crate) fn tabulated_masking(masking: Masking) -> Result<(), ParamError> {
+    match masking {
+        Masking::HeightCorrelated => Ok(()),
+        other => Err(ParamError::new(
+            "masking (0 height-correlated, 1 separable, 2 V-cavity)",
+            if other == Masking::Separable {
+                1.0
+            } else {
+                2.0
+            },
+            "{0}",
+        )),
+    }
 }
 
 /// A distribution whose rough dielectric interface the crate tabulates: [`Ggx`].
