@@ -940,6 +940,20 @@ fn push_compositions(c: &mut Configs) {
             );
         }
     }
+    // Energy-compensated coats over a white base, at the ends of the tables' range.
+    for (ax, ay) in [(1e-4, 1e-4), (1.0, 1.0), (1e-4, 1.0), (0.3, 0.3)] {
+        for e in [1.01, 1.5, 3.0, 1.0 / 3.0, 1.0 / 1.01] {
+            let top = RoughDielectric::new(Ggx::new(alpha(ax), alpha(ay)), eta(e))
+                .with_energy_compensation()
+                .unwrap();
+            c.push(
+                "Layered<CompensatedDielectric, Lambert>",
+                format!("α ({ax:e}, {ay:e}), η {e:e}, ρ 1 f32"),
+                Some(eta(e)),
+                Layered::new(top, Lambert::new(1.0f32).unwrap()),
+            );
+        }
+    }
     // Rough conductors under a coat, the extreme conductor too, RGB.
     for e in [1.5, 1e-3, 1e3] {
         let top = RoughDielectric::new(Beckmann::isotropic(alpha(0.2)), eta(e));

@@ -250,6 +250,13 @@ fn models() -> Result<Vec<Entry>, ParamError> {
             )?,
         ),
         entry(
+            "Compensated coat GGX α=0.5 η=1.5 over Lambert ρ=0.8 (stochastic)",
+            Layered::new(
+                RoughDielectric::new(Ggx::isotropic(a(0.5)?), glass).with_energy_compensation()?,
+                Lambert::new(0.8)?,
+            ),
+        ),
+        entry(
             "Smooth coat over Lambert ρ=1, no absorption (stochastic)",
             Layered::new(SmoothDielectric::new(glass), Lambert::new(1.0)?).with_thickness(0.0)?,
         ),

@@ -171,7 +171,7 @@ pub fn reflect_away(w: Vec3, n: Vec3) -> Vec3 {
 /// `η_i sin θ_i = η_t sin θ_t`. Total internal reflection happens exactly when
 /// `(η_i/η_t)² sin² θ_i > 1`. (PBR 4th ed., §9.3.2, eq. 9.5 and the vector form after it.)
 ///
-/// Unlike glam's `Vec3::refract_away(self, normal, eta)` — an incident direction pointing toward
+/// Unlike glam's `Vec3::refract(self, normal, eta)` — an incident direction pointing toward
 /// the surface, `eta` the ratio `η_i/η_t`, a zero vector on total internal reflection — this
 /// takes a direction pointing away, the crate's *relative* index [`Eta`] (inside over
 /// outside, whichever side `w` is on), and returns `None` on total internal reflection.

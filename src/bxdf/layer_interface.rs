@@ -1,6 +1,6 @@
 //! What a layered BSDF needs of its top interface.
 
-use super::{Prepare, RoughDielectric, SmoothDielectric, TransportMode};
+use super::{CompensatedDielectric, Prepare, RoughDielectric, SmoothDielectric, TransportMode};
 use crate::microfacet::NormalDistribution;
 use crate::param::Eta;
 
@@ -17,7 +17,9 @@ use crate::param::Eta;
 /// lobes with a density only ([`RoughDielectric`]); the walk's estimators choose their form
 /// from [`Prepare::lobes`].
 ///
-/// Implemented for [`RoughDielectric`] and [`SmoothDielectric`].
+/// Implemented for [`RoughDielectric`], [`SmoothDielectric`] and [`CompensatedDielectric`]
+/// (a rough coat that keeps the energy its microfacets scatter more than once: the stack's
+/// white furnace then holds to the compensated interface's own accuracy).
 pub trait LayerInterface: Prepare<Spectrum = f32> + Sized {
     /// The relative index of refraction `η = η_inside / η_outside`.
     #[must_use]
@@ -49,5 +51,19 @@ impl LayerInterface for SmoothDielectric {
     #[inline]
     fn for_transport(&self, mode: TransportMode) -> Self {
         self.with_mode(mode)
+    }
+}
+
+impl<D: NormalDistribution + Clone> LayerInterface for CompensatedDielectric<D> {
+    #[inline]
+    fn eta(&self) -> Eta {
+        self.inner().eta()
+    }
+
+    /// The same interface and tables in `mode`: the compensation lobes follow the inner
+    /// interface's transport mode.
+    #[inline]
+    fn for_transport(&self, mode: TransportMode) -> Self {
+        CompensatedDielectric::with_albedo(self.inner().clone().with_mode(mode), *self.albedo())
     }
 }
