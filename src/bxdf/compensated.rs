@@ -59,8 +59,9 @@ pub enum Compensation {
 /// (`F̄`: the mean over channels), the model's own sampler otherwise, and the density is
 /// the mixture `(1 − p) pdf_ss + p cos θi / π`. Turquin's option keeps the model's sampler.
 ///
-/// **Range.** The tables hold height-correlated masking ([`Masking::HeightCorrelated`], the
-/// default) and `α ≤ 1`; [`new`](Self::new) refuses other masking and wider lobes.
+/// **Range.** The tables hold height-correlated masking
+/// ([`Masking::HeightCorrelated`](crate::microfacet::Masking::HeightCorrelated), the default)
+/// and `α ≤ 1`; [`new`](Self::new) refuses other masking and wider lobes.
 /// Beckmann's tables use its exact `Λ`; with Walter's rational `G1` the furnace stays
 /// within 1 ± 0.0017 (measured by `tests/energy_compensation.rs`, `α` 0.1 to 1).
 /// [`with_albedo`](Self::with_albedo) takes a table of your own for anything else.
