@@ -184,8 +184,11 @@ fn white_stack<T: LayerInterface>(top: T) -> Layered<T, Lambert> {
 /// own accuracy (`1 ± 0.01` per meeting, asserted by `tests/energy_compensation.rs`) times the
 /// mean number of times a path meets the coat: once on the way in and `1/(1 − F̄_i)` times
 /// from inside, `F̄_i` the smooth coat's internal diffuse reflectance (3.5 meetings at
-/// `η = 1.5`). The uncompensated coat is printed beside it, and the compensated one must be
-/// closer to 1 wherever the uncompensated coat is off by more than the bound.
+/// `η = 1.5`; `F̄_i` of the smooth coat stands in for the rough one's). The bound is loose by
+/// design — it allows every meeting its worst error — and the figures printed show how much
+/// closer the stack comes (within 0.0095 of 1 here). The uncompensated coat is printed beside
+/// it, and the compensated one must be closer to 1 wherever the uncompensated coat measurably
+/// loses energy.
 #[test]
 fn a_compensated_rough_coat_keeps_the_white_furnace() {
     let k = common::k_sigma(0.01, TESTS);
@@ -212,7 +215,8 @@ fn a_compensated_rough_coat_keeps_the_white_furnace() {
                     (c.mean - 1.0).abs() <= bound + k * c.std_err,
                     "α={a} η={e} θo={theta}°: {c}"
                 );
-                if 1.0 - s.mean > bound {
+                // Where the plain coat loses measurably, the compensated one is closer to 1.
+                if 1.0 - s.mean > k * (s.std_err + c.std_err) {
                     assert!((c.mean - 1.0).abs() < 1.0 - s.mean, "{c} against {s}");
                 }
             }

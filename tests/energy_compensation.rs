@@ -161,9 +161,10 @@ fn split_albedo(
     )
 }
 
-/// One furnace point: the compensated model's albedo at `wo` (by quadrature, and by its own
-/// sampler with `sampled = (samples, seed)` when `samples > 0`) beside the single-scattering
-/// model's.
+/// One furnace point: the compensated model's albedo at `wo` ([`split_albedo`]: the
+/// single-scattering lobe by its stratified sampler, the compensation by quadrature; and by
+/// the whole model's own sampler with `sampled = (samples, seed)` when `samples > 0`) beside
+/// the single-scattering model's.
 fn furnace_point(
     label: String,
     compensated: &dyn Bxdf<Spectrum = f32>,

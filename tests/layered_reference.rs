@@ -27,7 +27,7 @@ use core::f32::consts::PI;
 use lobe::bxdf::{Bxdf, CoatedConductor, CoatedDiffuse, LayerInterface, Layered};
 use lobe::microfacet::Ggx;
 use lobe::verify::{Accumulator, Config, Estimate, Pcg32, albedo};
-use lobe::{Alpha, Eta, Vec2, Vec3, metals};
+use lobe::{Alpha, Eta, Vec3, metals};
 
 /// Comparisons in this file: 4 configurations × (2 albedo directions × 2 estimators + 3
 /// pairs).
@@ -257,6 +257,8 @@ fn a_scattering_layer_matches_the_brute_force_walk() {
         .unwrap()
         .with_medium(0.9, 0.4)
         .unwrap();
+    // The reference walks the stack the model says it is: check that it is the one built.
+    assert_eq!((model.thickness(), model.medium()), (0.5, (0.9, 0.4)));
     let stack = Stack::of(&model);
     compare(
         "CoatedDiffuse with a medium (albedo 0.9, g 0.4, 0.5 mfp)",
@@ -279,6 +281,7 @@ fn a_short_walk_counts_the_same_paths() {
     .unwrap()
     .with_max_depth(3)
     .unwrap();
+    assert_eq!((model.thickness(), model.max_depth()), (0.0, 3));
     let stack = Stack::of(&model);
     compare(
         "rough η=2 coat over white Lambert, max depth 3",
@@ -287,5 +290,4 @@ fn a_short_walk_counts_the_same_paths() {
         k,
         4,
     );
-    let _ = Vec2::ZERO;
 }

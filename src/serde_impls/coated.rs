@@ -20,10 +20,10 @@ wire! {
 wire! {
     /// [`Plastic`] on the wire: `{ "reflectance": …, "distribution": …, "eta": 1.5 }`, in the
     /// constructor's order.
-    impl[D: NormalDistribution + Clone, S: Spectrum] Plastic<D, S> as "Plastic"
+    impl[D: NormalDistribution, S: Spectrum] Plastic<D, S> as "Plastic"
         PlasticRepr<S, D> |m| {
         reflectance: S = m.reflectance(),
-        distribution: D = m.distribution().clone(),
+        distribution: D = m.distribution(),
         eta: Eta = m.eta(),
     } via |r| Plastic::new(r.reflectance, r.distribution, r.eta)
 }
@@ -31,10 +31,10 @@ wire! {
 wire! {
     /// [`CompensatedPlastic`] on the wire: as [`Plastic`]; the type says the coat is
     /// compensated.
-    impl[D: TabulatedDielectric + Clone, S: Spectrum] CompensatedPlastic<D, S> as "Plastic"
+    impl[D: TabulatedDielectric, S: Spectrum] CompensatedPlastic<D, S> as "Plastic"
         CompensatedPlasticRepr<S, D> |m| {
         reflectance: S = m.reflectance(),
-        distribution: D = m.distribution().clone(),
+        distribution: D = m.distribution(),
         eta: Eta = m.eta(),
     } via |r| Plastic::compensated(r.reflectance, r.distribution, r.eta)
 }

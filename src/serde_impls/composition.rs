@@ -13,18 +13,18 @@ use serde::ser::{Serialize, Serializer};
 wire! {
     /// [`Mix`] on the wire: `{ "first": …, "second": …, "weight": 0.3 }`, the weight of the
     /// second.
-    impl[A: Prepare + Clone, B: Prepare<Spectrum = A::Spectrum> + Clone] Mix<A, B> as "Mix"
+    impl[A: Prepare, B: Prepare<Spectrum = A::Spectrum>] Mix<A, B> as "Mix"
         MixRepr<A, B> |m| {
-        first: A = m.first().clone(),
-        second: B = m.second().clone(),
+        first: A = m.first(),
+        second: B = m.second(),
         weight: f32 = m.weight(),
     } via |r| Mix::new(r.first, r.second, r.weight)
 }
 
 wire! {
     /// [`TwoSided`] on the wire: `{ "inner": … }`, the one-sided model.
-    impl[B: Prepare + Clone] TwoSided<B> as "TwoSided" TwoSidedRepr<B> |m| {
-        inner: B = m.inner().clone(),
+    impl[B: Prepare] TwoSided<B> as "TwoSided" TwoSidedRepr<B> |m| {
+        inner: B = m.inner(),
     } via |r| Ok(TwoSided::new(r.inner))
 }
 

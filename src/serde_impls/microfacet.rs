@@ -10,21 +10,21 @@ use crate::param::Eta;
 wire! {
     /// [`Microfacet`] on the wire: `{ "distribution": …, "fresnel": … }`, and
     /// `"masking": "separable"` or `"v_cavity"` when it is not height-correlated Smith.
-    impl[D: NormalDistribution + Clone, F: Fresnel] Microfacet<D, F> as "Microfacet"
+    impl[D: NormalDistribution, F: Fresnel] Microfacet<D, F> as "Microfacet"
         MicrofacetRepr<D, F> |m| {
-        distribution: D = m.distribution().clone(),
+        distribution: D = m.distribution(),
         #[serde(default, skip_serializing_if = "is_default")]
         masking: Masking = m.masking(),
-        fresnel: F = *m.fresnel(),
+        fresnel: F = m.fresnel(),
     } via |r| Ok(Microfacet::new(r.distribution, r.masking, r.fresnel))
 }
 
 wire! {
     /// [`RoughDielectric`] on the wire: `{ "distribution": …, "eta": 1.5 }`, and `"masking"`
     /// and `"mode": "importance"` when they are not the defaults.
-    impl[D: NormalDistribution + Clone] RoughDielectric<D> as "RoughDielectric"
+    impl[D: NormalDistribution] RoughDielectric<D> as "RoughDielectric"
         RoughDielectricRepr<D> |m| {
-        distribution: D = m.distribution().clone(),
+        distribution: D = m.distribution(),
         eta: Eta = m.eta(),
         #[serde(default, skip_serializing_if = "is_default")]
         masking: Masking = m.masking(),

@@ -166,6 +166,11 @@
 /// attributes), each read from the model `m` by a getter, and the constructor that builds the
 /// model again from the struct `r`, its refusal (a [`ParamError`]) the deserialiser's error.
 ///
+/// The wire struct's type parameters are the model's: each must be `Serialize` for the one
+/// impl and `Deserialize` for the other, and nothing more. A getter may return a reference
+/// (`m.distribution()`): the struct is then written with `&D` in place of `D`, so writing a
+/// model clones nothing.
+///
 /// ```text
 /// wire! {
 ///     /// [`Lambert`] on the wire: `{ "reflectance": [0.8, 0.8, 0.8] }`.
@@ -190,7 +195,7 @@ macro_rules! wire {
 
         impl<$($gen)*> serde::Serialize for $ty
         where
-            $repr$(<$($p),*>)?: serde::Serialize,
+            $($($p: serde::Serialize,)*)?
         {
             fn serialize<Ser: serde::Serializer>(
                 &self,
@@ -204,14 +209,14 @@ macro_rules! wire {
 
         impl<'de, $($gen)*> serde::Deserialize<'de> for $ty
         where
-            $repr$(<$($p),*>)?: serde::Deserialize<'de>,
+            $($($p: serde::Deserialize<'de>,)*)?
         {
             fn deserialize<De: serde::Deserializer<'de>>(
                 deserializer: De,
             ) -> Result<Self, De::Error> {
                 let $r = <$repr$(<$($p),*>)? as serde::Deserialize>::deserialize(deserializer)?;
                 let made: Result<Self, $crate::param::ParamError> = $make;
-                made.map_err(super::refused)
+                made.map_err($crate::serde_impls::refused)
             }
         }
     };

@@ -8,7 +8,7 @@ use crate::param::Eta;
 wire! {
     /// [`Mirror`] on the wire: `{ "fresnel": … }`.
     impl[F: Fresnel] Mirror<F> as "Mirror" MirrorRepr<F> |m| {
-        fresnel: F = *m.fresnel(),
+        fresnel: F = m.fresnel(),
     } via |r| Ok(Mirror::new(r.fresnel))
 }
 

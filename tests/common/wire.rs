@@ -1,5 +1,5 @@
-//! Serde round trips and refusals, shared by `tests/serde_parts.rs` and
-//! `tests/serde_models.rs`.
+//! Serde round trips and refusals, shared by `tests/serde_parts.rs`,
+//! `tests/serde_models.rs` and `tests/serde_composed.rs`.
 
 use lobe::bxdf::Bxdf;
 use lobe::{Spectrum, Vec2, Vec3};
