@@ -228,31 +228,36 @@ fn layered_models_are_their_layers_and_the_options_that_differ_from_the_defaults
 
     let glass_over_lambert =
         r#"{"top":{"distribution":{"alpha":0.1},"eta":1.5},"bottom":{"reflectance":0.5}"#;
-    assert_refused::<Layered<RoughDielectric<Ggx>, Lambert>>(
-        &format!(r#"{glass_over_lambert},"thickness":-1}}"#),
-        "invalid thickness = -1: expected a value in [0, 1000]",
-    );
-    assert_refused::<Layered<RoughDielectric<Ggx>, Lambert>>(
-        &format!(r#"{glass_over_lambert},"samples":0}}"#),
-        "invalid samples = 0: expected a value in [1, 4096]",
-    );
-    assert_refused::<Layered<RoughDielectric<Ggx>, Lambert>>(
-        &format!(r#"{glass_over_lambert},"medium":{{"albedo":0.5,"g":1}}}}"#),
-        "invalid g = 1: expected a value in [-0.99, 0.99]",
-    );
-    // A misspelt option is an error, never a silent default.
-    assert_refused::<Layered<RoughDielectric<Ggx>, Lambert>>(
-        &format!(r#"{glass_over_lambert},"thicknes":0.1}}"#),
-        "unknown field `thicknes`",
-    );
-    assert_refused::<Layered<RoughDielectric<Ggx>, Lambert>>(
-        &format!(r#"{glass_over_lambert},"max_depth":0}}"#),
-        "invalid max_depth = 0: expected a value in [1, 4096]",
-    );
-    assert_refused::<Layered<RoughDielectric<Ggx>, Lambert>>(
-        &format!(r#"{glass_over_lambert},"medium":{{"albedo":1.5}}}}"#),
-        "invalid albedo = 1.5: expected a value in [0, 1]",
-    );
+    // Each option out of range is refused by name, and a misspelt one is an error, never a
+    // silent default.
+    for (option, message) in [
+        (
+            r#""thickness":-1"#,
+            "invalid thickness = -1: expected a value in [0, 1000]",
+        ),
+        (
+            r#""samples":0"#,
+            "invalid samples = 0: expected a value in [1, 4096]",
+        ),
+        (
+            r#""max_depth":0"#,
+            "invalid max_depth = 0: expected a value in [1, 4096]",
+        ),
+        (
+            r#""medium":{"albedo":0.5,"g":1}"#,
+            "invalid g = 1: expected a value in [-0.99, 0.99]",
+        ),
+        (
+            r#""medium":{"albedo":1.5}"#,
+            "invalid albedo = 1.5: expected a value in [0, 1]",
+        ),
+        (r#""thicknes":0.1"#, "unknown field `thicknes`"),
+    ] {
+        assert_refused::<Layered<RoughDielectric<Ggx>, Lambert>>(
+            &format!("{glass_over_lambert},{option}}}"),
+            message,
+        );
+    }
 }
 
 #[test]
