@@ -18,39 +18,20 @@
 //! `black_box`, short measurement windows.
 
 mod inputs;
+#[path = "common/passes.rs"]
+mod passes;
 
-use criterion::{BenchmarkGroup, Criterion, Throughput, criterion_group, criterion_main};
+use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use inputs::{Inputs, N, inputs};
 use lobe::bxdf::{
-    Bxdf, CoatedConductor, CoatedDiffuse, DiffuseTransmission, Lambert, Microfacet, Mix, Sheen,
-    TwoSided,
+    CoatedConductor, CoatedDiffuse, DiffuseTransmission, Lambert, Microfacet, Mix, Sheen, TwoSided,
 };
 use lobe::fresnel::Conductor;
 use lobe::microfacet::{Ggx, Masking};
 use lobe::{Alpha, Eta, Vec3, metals};
+use passes::{group, model, two_sided};
 use std::hint::black_box;
 use std::time::Duration;
-
-fn group<'a>(
-    c: &'a mut Criterion,
-    name: &str,
-) -> BenchmarkGroup<'a, criterion::measurement::WallTime> {
-    let mut g = c.benchmark_group(name);
-    g.throughput(Throughput::Elements(N as u64));
-    g
-}
-
-/// The inputs with the sides mixed: `wi` below the surface for odd `k`, `wo` below for
-/// `k mod 4 ≥ 2`.
-fn two_sided(i: &Inputs) -> Inputs {
-    let flip = |w: Vec3, below: bool| if below { Vec3::new(w.x, w.y, -w.z) } else { w };
-    Inputs {
-        wo: (0..N).map(|k| flip(i.wo[k], k % 4 >= 2)).collect(),
-        wi: (0..N).map(|k| flip(i.wi[k], k % 2 == 1)).collect(),
-        u: i.u.clone(),
-        uc: i.uc.clone(),
-    }
-}
 
 /// The inputs seen from below for `k mod 4 ≥ 2` (both directions mirrored).
 fn mirrored(i: &Inputs) -> Inputs {
@@ -61,34 +42,6 @@ fn mirrored(i: &Inputs) -> Inputs {
         u: i.u.clone(),
         uc: i.uc.clone(),
     }
-}
-
-/// `eval`, `pdf` and `sample` of `model` over the inputs.
-fn model<M: Bxdf>(c: &mut Criterion, name: &str, model: &M, i: &Inputs) {
-    let m = black_box(model);
-    let mut g = group(c, name);
-    g.bench_function("eval", |b| {
-        b.iter(|| {
-            for k in 0..N {
-                black_box(m.eval(i.wo[k], i.wi[k]));
-            }
-        })
-    });
-    g.bench_function("pdf", |b| {
-        b.iter(|| {
-            for k in 0..N {
-                black_box(m.pdf(i.wo[k], i.wi[k]));
-            }
-        })
-    });
-    g.bench_function("sample", |b| {
-        b.iter(|| {
-            for k in 0..N {
-                black_box(m.sample(i.wo[k], i.u[k], i.uc[k]));
-            }
-        })
-    });
-    g.finish();
 }
 
 fn ggx(a: f32) -> Ggx {

@@ -27,8 +27,10 @@
 //! 82 benchmarks take about two minutes.
 
 mod inputs;
+#[path = "common/passes.rs"]
+mod passes;
 
-use criterion::{BenchmarkGroup, Criterion, Throughput, criterion_group, criterion_main};
+use criterion::{Criterion, criterion_group, criterion_main};
 use inputs::{Inputs, N, inputs};
 use lobe::bxdf::{
     BlinnPhong, BlinnPhongForm, Bxdf, DisneyDiffuse, EnergyPreservingOrenNayar, Glazed, Lambert,
@@ -38,61 +40,12 @@ use lobe::bxdf::{
 use lobe::fresnel::{self, Conductor};
 use lobe::microfacet::{Beckmann, BlinnPhongNdf, Ggx, Gtr, Masking, NormalDistribution};
 use lobe::{Alpha, Eta, Roughness, Vec3};
+use passes::{group, model, two_sided};
 use std::hint::black_box;
 use std::time::Duration;
 
 /// Evaluations per prepared state in the renderer's pattern.
 const PER_POINT: usize = 8;
-
-/// A group of benchmarks over the `N` inputs, each reported per element.
-fn group<'a>(
-    c: &'a mut Criterion,
-    name: &str,
-) -> BenchmarkGroup<'a, criterion::measurement::WallTime> {
-    let mut g = c.benchmark_group(name);
-    g.throughput(Throughput::Elements(N as u64));
-    g
-}
-
-/// The inputs with the sides mixed, for the transmissive models: `wi` below the surface for
-/// odd `k`, `wo` below for `k mod 4 ≥ 2`.
-fn two_sided(i: &Inputs) -> Inputs {
-    let flip = |w: Vec3, below: bool| if below { Vec3::new(w.x, w.y, -w.z) } else { w };
-    Inputs {
-        wo: (0..N).map(|k| flip(i.wo[k], k % 4 >= 2)).collect(),
-        wi: (0..N).map(|k| flip(i.wi[k], k % 2 == 1)).collect(),
-        u: i.u.clone(),
-        uc: i.uc.clone(),
-    }
-}
-
-/// `eval`, `pdf` and `sample` of `model` over the inputs.
-fn model<M: Bxdf>(c: &mut Criterion, name: &str, model: &M, i: &Inputs) {
-    let m = black_box(model);
-    let mut g = group(c, name);
-    g.bench_function("eval", |b| {
-        b.iter(|| {
-            for k in 0..N {
-                black_box(m.eval(i.wo[k], i.wi[k]));
-            }
-        })
-    });
-    g.bench_function("pdf", |b| {
-        b.iter(|| {
-            for k in 0..N {
-                black_box(m.pdf(i.wo[k], i.wi[k]));
-            }
-        })
-    });
-    g.bench_function("sample", |b| {
-        b.iter(|| {
-            for k in 0..N {
-                black_box(m.sample(i.wo[k], i.u[k], i.uc[k]));
-            }
-        })
-    });
-    g.finish();
-}
 
 /// The prepared path of `model`: `eval_pdf_prepared` on states prepared ahead; one `prepare`
 /// and [`PER_POINT`] `eval_pdf_prepared` per shading point (per evaluation, the prepare's

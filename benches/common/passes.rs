@@ -1,0 +1,59 @@
+//! The benchmark passes shared by `benches/shading.rs` and `benches/combinators.rs`: a group
+//! reported per input, the inputs with the sides mixed, and one pass of `eval`, `pdf` and
+//! `sample` over the inputs.
+
+use super::inputs::{Inputs, N};
+use criterion::{BenchmarkGroup, Criterion, Throughput};
+use lobe::Vec3;
+use lobe::bxdf::Bxdf;
+use std::hint::black_box;
+
+/// A group of benchmarks over the `N` inputs, each reported per element.
+pub fn group<'a>(
+    c: &'a mut Criterion,
+    name: &str,
+) -> BenchmarkGroup<'a, criterion::measurement::WallTime> {
+    let mut g = c.benchmark_group(name);
+    g.throughput(Throughput::Elements(N as u64));
+    g
+}
+
+/// The inputs with the sides mixed, for the transmissive models: `wi` below the surface for
+/// odd `k`, `wo` below for `k mod 4 ≥ 2`.
+pub fn two_sided(i: &Inputs) -> Inputs {
+    let flip = |w: Vec3, below: bool| if below { Vec3::new(w.x, w.y, -w.z) } else { w };
+    Inputs {
+        wo: (0..N).map(|k| flip(i.wo[k], k % 4 >= 2)).collect(),
+        wi: (0..N).map(|k| flip(i.wi[k], k % 2 == 1)).collect(),
+        u: i.u.clone(),
+        uc: i.uc.clone(),
+    }
+}
+
+/// `eval`, `pdf` and `sample` of `model` over the inputs.
+pub fn model<M: Bxdf>(c: &mut Criterion, name: &str, model: &M, i: &Inputs) {
+    let m = black_box(model);
+    let mut g = group(c, name);
+    g.bench_function("eval", |b| {
+        b.iter(|| {
+            for k in 0..N {
+                black_box(m.eval(i.wo[k], i.wi[k]));
+            }
+        })
+    });
+    g.bench_function("pdf", |b| {
+        b.iter(|| {
+            for k in 0..N {
+                black_box(m.pdf(i.wo[k], i.wi[k]));
+            }
+        })
+    });
+    g.bench_function("sample", |b| {
+        b.iter(|| {
+            for k in 0..N {
+                black_box(m.sample(i.wo[k], i.u[k], i.uc[k]));
+            }
+        })
+    });
+    g.finish();
+}
