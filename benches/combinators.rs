@@ -31,7 +31,6 @@ use lobe::microfacet::{Ggx, Masking};
 use lobe::{Alpha, Eta, Vec3, metals};
 use passes::{group, model, two_sided};
 use std::hint::black_box;
-use std::time::Duration;
 
 /// The inputs seen from below for `k mod 4 ≥ 2` (both directions mirrored).
 fn mirrored(i: &Inputs) -> Inputs {
@@ -122,11 +121,7 @@ fn layered(c: &mut Criterion) {
 
 criterion_group! {
     name = benches;
-    config = Criterion::default()
-        .warm_up_time(Duration::from_millis(300))
-        .measurement_time(Duration::from_millis(1000))
-        .sample_size(20)
-        .nresamples(10_000);
+    config = passes::config();
     targets = combinators, layered
 }
 criterion_main!(benches);

@@ -42,7 +42,6 @@ use lobe::microfacet::{Beckmann, BlinnPhongNdf, Ggx, Gtr, Masking, NormalDistrib
 use lobe::{Alpha, Eta, Roughness, Vec3};
 use passes::{group, model, two_sided};
 use std::hint::black_box;
-use std::time::Duration;
 
 /// Evaluations per prepared state in the renderer's pattern.
 const PER_POINT: usize = 8;
@@ -285,11 +284,7 @@ fn models(c: &mut Criterion) {
 
 criterion_group! {
     name = benches;
-    config = Criterion::default()
-        .warm_up_time(Duration::from_millis(300))
-        .measurement_time(Duration::from_millis(1000))
-        .sample_size(20)
-        .nresamples(10_000);
+    config = passes::config();
     targets = parts, models
 }
 criterion_main!(benches);

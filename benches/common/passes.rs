@@ -7,6 +7,17 @@ use criterion::{BenchmarkGroup, Criterion, Throughput};
 use lobe::Vec3;
 use lobe::bxdf::Bxdf;
 use std::hint::black_box;
+use std::time::Duration;
+
+/// The criterion configuration of these benches: short windows (0.3 s warm-up, 1 s of 20
+/// samples), so that a full run takes minutes on the project's 2-core machine.
+pub fn config() -> Criterion {
+    Criterion::default()
+        .warm_up_time(Duration::from_millis(300))
+        .measurement_time(Duration::from_millis(1000))
+        .sample_size(20)
+        .nresamples(10_000)
+}
 
 /// A group of benchmarks over the `N` inputs, each reported per element.
 pub fn group<'a>(
