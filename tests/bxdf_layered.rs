@@ -151,12 +151,7 @@ fn the_white_furnace() {
         (0.05, 1.5, 0.95),
         (0.3, 1.5, 0.6),
     ] {
-        let stack = CoatedDiffuse::coated_diffuse(1.0_f32, ggx(a), eta(e))
-            .unwrap()
-            .with_thickness(0.0)
-            .unwrap()
-            .with_max_depth(1024)
-            .unwrap();
+        let stack = white_stack(RoughDielectric::new(ggx(a), eta(e)));
         for theta in [0.0, 60.0] {
             let m = albedo(&stack, common::dir(theta, 0.2), &budget);
             eprintln!(
