@@ -98,6 +98,9 @@ extern crate std;
 #[cfg(not(any(feature = "std", feature = "libm")))]
 compile_error!("lobe needs a float library: enable the `std` (default) or the `libm` feature");
 
+#[macro_use]
+mod macros;
+
 pub mod batch;
 pub mod bxdf;
 pub mod frame;

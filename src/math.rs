@@ -194,25 +194,41 @@ pub fn safe_asin(x: f32) -> f32 {
     asin(x.clamp(-1.0, 1.0))
 }
 
+/// `c₀ + c₁x + … + c₉x⁹` in Estrin's scheme (pairs, then pairs of pairs): four dependent
+/// multiply-adds where Horner's rule chains nine, for the fitted polynomials below.
+#[inline(always)]
+fn estrin(c: [f32; 10], x: f32) -> f32 {
+    let x2 = x * x;
+    let x4 = x2 * x2;
+    let low = (c[0] + c[1] * x + x2 * (c[2] + c[3] * x))
+        + x4 * (c[4] + c[5] * x + x2 * (c[6] + c[7] * x));
+    low + x4 * x4 * (c[8] + c[9] * x)
+}
+
 /// The complementary error function `erfc(x) = 1 − erf(x)`, with a relative error below
-/// about `(2 + x²) · 6e-8` for all `x`: its tail, where `erfc` is tiny, keeps its digits up
+/// `(2 + x²) · 2e-7` for all `x`: its tail, where `erfc` is tiny, keeps its digits up
 /// to the rounding of `e^(−x²)`'s argument, which no `f32` evaluation escapes.
 ///
 /// Chebyshev fit of Press et al., *Numerical Recipes* (2nd ed., §6.2, `erfcc`), whose
 /// fractional error is below 1.2e-7 in exact arithmetic.
 #[must_use]
 pub fn erfc(x: f32) -> f32 {
+    const ERFC_FIT: [f32; 10] = [
+        -1.265_512_2,
+        1.000_023_7,
+        0.374_091_96,
+        0.096_784_18,
+        -0.186_288_06,
+        0.278_868_07,
+        -1.135_204,
+        1.488_515_9,
+        -0.822_152_23,
+        0.170_872_77,
+    ];
     let z = abs(x);
     let t = 1.0 / (1.0 + 0.5 * z);
-    // Horner form of the fitted polynomial in t (Numerical Recipes, eq. 6.2.21's coefficients).
-    let poly = -1.265_512_2
-        + t * (1.000_023_7
-            + t * (0.374_091_96
-                + t * (0.096_784_18
-                    + t * (-0.186_288_06
-                        + t * (0.278_868_07
-                            + t * (-1.135_204
-                                + t * (1.488_515_9 + t * (-0.822_152_23 + t * 0.170_872_77))))))));
+    // The fitted polynomial in t (Numerical Recipes, eq. 6.2.21's coefficients).
+    let poly = estrin(ERFC_FIT, t);
     let r = t * exp(-z * z + poly);
     if x >= 0.0 { r } else { 2.0 - r }
 }
@@ -269,38 +285,35 @@ pub(crate) fn erf_inv_approx(x: f32) -> f32 {
         };
     }
     let w = -ln((1.0 - x) * (1.0 + x));
+    // Giles' coefficients, lowest degree first, the tenth zero.
     let p = if w < 5.0 {
-        let w = w - 2.5;
-        let mut p = 2.810_226_4e-8;
-        for c in [
-            3.432_739_4e-7,
-            -3.523_387_7e-6,
-            -4.391_506_5e-6,
-            2.185_808_7e-4,
-            -1.253_725e-3,
-            -4.177_681_6e-3,
-            0.246_640_73,
+        let c = [
             1.501_409_4,
-        ] {
-            p = c + p * w;
-        }
-        p
+            0.246_640_73,
+            -4.177_681_6e-3,
+            -1.253_725e-3,
+            2.185_808_7e-4,
+            -4.391_506_5e-6,
+            -3.523_387_7e-6,
+            3.432_739_4e-7,
+            2.810_226_4e-8,
+            0.0,
+        ];
+        estrin(c, w - 2.5)
     } else {
-        let w = sqrt(w) - 3.0;
-        let mut p = -2.002_142_6e-4;
-        for c in [
-            1.009_505_6e-4,
-            1.349_343_2e-3,
-            -3.673_428_4e-3,
-            5.739_507_7e-3,
-            -7.622_461_3e-3,
-            9.438_870_5e-3,
-            1.001_674,
+        let c = [
             2.832_976_8,
-        ] {
-            p = c + p * w;
-        }
-        p
+            1.001_674,
+            9.438_870_5e-3,
+            -7.622_461_3e-3,
+            5.739_507_7e-3,
+            -3.673_428_4e-3,
+            1.349_343_2e-3,
+            1.009_505_6e-4,
+            -2.002_142_6e-4,
+            0.0,
+        ];
+        estrin(c, sqrt(w) - 3.0)
     };
     p * x
 }
@@ -370,6 +383,34 @@ mod tests {
         }
     }
 
+    /// The documented bound, `(2 + x²) · 2e-7` relative, on a grid of step 1/2000 from −4
+    /// to 9 against the `f64` reference the build script uses (series and continued fraction
+    /// to 1e-14). Measured: 1.65e-7 × (2 + x²) at x = −0.0115, a few ulps of `erfc ≈ 1`
+    /// (Horner's evaluation of the same fit: 1.82e-7 at x = 0.1265).
+    #[test]
+    fn erfc_meets_its_documented_bound() {
+        #[allow(dead_code)]
+        mod reference {
+            include!(concat!(env!("CARGO_MANIFEST_DIR"), "/build/slopes.rs"));
+        }
+        let mut worst = (0.0_f64, 0.0_f32);
+        for i in -8000..=18000 {
+            let x = i as f32 / 2000.0;
+            let want = reference::erfc64(f64::from(x));
+            let rel = ((f64::from(erfc(x)) - want) / want).abs() / (2.0 + f64::from(x * x));
+            if rel > worst.0 {
+                worst = (rel, x);
+            }
+        }
+        std::eprintln!("largest erfc error / (2 + x²): {worst:?}");
+        assert!(
+            worst.0 < 2e-7,
+            "erfc({}) off by {:e} × (2 + x²)",
+            worst.1,
+            worst.0
+        );
+    }
+
     #[test]
     fn erfc_keeps_relative_precision_in_the_tail() {
         // erfc(3) = 2.209049699858544e-5, erfc(5) = 1.537459794428035e-12.
@@ -379,7 +420,7 @@ mod tests {
         ] {
             let got = f64::from(erfc(x));
             // The documented bound: the rounding of e^(−x²)'s argument grows with x².
-            let bound = (2.0 + f64::from(x * x)) * 6e-8;
+            let bound = (2.0 + f64::from(x * x)) * 2e-7;
             assert!(
                 ((got - want) / want).abs() < bound,
                 "erfc({x}) = {got}, want {want}"

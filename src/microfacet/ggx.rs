@@ -1,9 +1,8 @@
 //! The GGX (Trowbridge-Reitz) distribution, anisotropic.
 
-use super::{NormalDistribution, SampleDCos, Sampling, View, upper};
+use super::{NormalDistribution, SampleDCos, Sampling, View, Widths, upper};
 use crate::math::{safe_sqrt, sin_cos_turns, sqrt};
 use crate::param::Alpha;
-use core::f32::consts::FRAC_1_PI;
 use glam::{Vec2, Vec3};
 
 /// The GGX / Trowbridge-Reitz distribution of microfacet normals, with widths `αx`, `αy`
@@ -39,13 +38,7 @@ use glam::{Vec2, Vec3};
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Ggx {
-    ax: f32,
-    ay: f32,
-    /// `1/αx`, `1/αy`: the hot path multiplies.
-    inv_ax: f32,
-    inv_ay: f32,
-    /// `1 / (π αx αy)`.
-    norm: f32,
+    width: Widths,
     /// Whether reflection sampling uses the bounded sampler (the default).
     bounded: bool,
 }
@@ -54,13 +47,8 @@ impl Ggx {
     /// An anisotropic GGX distribution with width `ax` along local `x` and `ay` along `y`.
     #[must_use]
     pub fn new(ax: Alpha, ay: Alpha) -> Self {
-        let (ax, ay) = (ax.get(), ay.get());
         Self {
-            ax,
-            ay,
-            inv_ax: 1.0 / ax,
-            inv_ay: 1.0 / ay,
-            norm: FRAC_1_PI / (ax * ay),
+            width: Widths::new(ax, ay),
             bounded: true,
         }
     }
@@ -92,13 +80,13 @@ impl Ggx {
     #[inline(always)]
     #[must_use]
     pub fn alpha(&self) -> (f32, f32) {
-        (self.ax, self.ay)
+        (self.width.ax, self.width.ay)
     }
 
     /// `(αx wx, αy wy)`, and `(αx wx)² + (αy wy)²`: `α(φ)² tan² θ · cos² θ` of a direction.
     #[inline(always)]
     fn stretched_xy(&self, w: Vec3) -> (f32, f32, f32) {
-        let (x, y) = (self.ax * w.x, self.ay * w.y);
+        let (x, y) = (self.width.ax * w.x, self.width.ay * w.y);
         (x, y, x * x + y * y)
     }
 
@@ -106,13 +94,13 @@ impl Ggx {
     /// (Heitz 2018, §3.2): `normalize(αx wx, αy wy, wz)`.
     #[inline(always)]
     fn stretch(&self, w: Vec3) -> Vec3 {
-        Vec3::new(self.ax * w.x, self.ay * w.y, w.z).normalize_or(Vec3::Z)
+        Vec3::new(self.width.ax * w.x, self.width.ay * w.y, w.z).normalize_or(Vec3::Z)
     }
 
     /// A normal of the hemisphere configuration mapped back to the ellipsoid one.
     #[inline(always)]
     fn unstretch(&self, h: Vec3) -> Vec3 {
-        Vec3::new(self.ax * h.x, self.ay * h.y, h.z.max(0.0)).normalize_or(Vec3::Z)
+        Vec3::new(self.width.ax * h.x, self.width.ay * h.y, h.z.max(0.0)).normalize_or(Vec3::Z)
     }
 
     /// The halfway vector of the view and a direction drawn uniformly from the spherical cap
@@ -131,7 +119,7 @@ impl Ggx {
     /// (Eto & Tokuyoshi 2023, eqs. 5–6).
     #[inline(always)]
     fn bounded_cap(&self, w: Vec3, wh: Vec3) -> f32 {
-        let a = self.ax.min(self.ay).min(1.0);
+        let a = self.width.ax.min(self.width.ay).min(1.0);
         let a2 = a * a;
         let s = 1.0 + sqrt(w.x * w.x + w.y * w.y);
         let s2 = s * s;
@@ -170,7 +158,8 @@ impl Ggx {
         let wh = stretched_view(&view);
         let b = self.bounded_cap(view.w, wh);
         // The cap direction that produced m: wh reflected about the stretched normal.
-        let h = Vec3::new(m.x * self.inv_ax, m.y * self.inv_ay, m.z).normalize_or(Vec3::Z);
+        let h =
+            Vec3::new(m.x * self.width.inv_ax, m.y * self.width.inv_ay, m.z).normalize_or(Vec3::Z);
         let c = 2.0 * h.dot(wh) * h - wh;
         if c.z < -b {
             return 0.0;
@@ -204,9 +193,9 @@ impl NormalDistribution for Ggx {
         if !(m.z > 0.0) {
             return 0.0;
         }
-        let (x, y) = (m.x * self.inv_ax, m.y * self.inv_ay);
+        let (x, y) = (m.x * self.width.inv_ax, m.y * self.width.inv_ay);
         let t = x * x + y * y + m.z * m.z;
-        self.norm / (t * t)
+        self.width.norm / (t * t)
     }
 
     /// `t(s) = (sx/αx)² + (sy/αy)² + sz²` is homogeneous of degree 2, so
@@ -216,9 +205,9 @@ impl NormalDistribution for Ggx {
         if !(s.z > 0.0) {
             return 0.0;
         }
-        let (x, y) = (s.x * self.inv_ax, s.y * self.inv_ay);
+        let (x, y) = (s.x * self.width.inv_ax, s.y * self.width.inv_ay);
         let q = s2 / (x * x + y * y + s.z * s.z);
-        self.norm * q * q
+        self.width.norm * q * q
     }
 
     #[inline(always)]
@@ -245,7 +234,7 @@ impl NormalDistribution for Ggx {
         let above = w.z > 0.0;
         let visible = if above { 2.0 / (w.z + len) } else { 0.0 };
         let (inv_len, cap, reflection) = if self.bounded {
-            let a = self.ax.min(self.ay).min(1.0);
+            let a = self.width.ax.min(self.width.ay).min(1.0);
             let a2 = a * a;
             let sp = 1.0 + sqrt(w.x * w.x + w.y * w.y);
             let (p, q) = (sp * sp + a2 * w.z * w.z, (1.0 - a2) * sp * sp * w.z);
@@ -308,7 +297,7 @@ impl SampleDCos for Ggx {
     fn sample_d_cos(&self, u: Vec2) -> Vec3 {
         let r = sqrt(u.x / (1.0 - u.x).max(f32::MIN_POSITIVE));
         let (s, c) = sin_cos_turns(u.y);
-        Vec3::new(-self.ax * r * c, -self.ay * r * s, 1.0).normalize_or(Vec3::X)
+        Vec3::new(-self.width.ax * r * c, -self.width.ay * r * s, 1.0).normalize_or(Vec3::X)
     }
 }
 

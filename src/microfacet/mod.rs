@@ -26,12 +26,14 @@ mod ggx;
 mod gtr;
 mod masking;
 mod smith_table;
+mod widths;
 
 pub use beckmann::{Beckmann, BeckmannMasking};
 pub use blinn_phong::BlinnPhongNdf;
 pub use ggx::Ggx;
 pub use gtr::Gtr;
 pub use masking::{Masking, v_cavity};
+use widths::Widths;
 
 use glam::{Vec2, Vec3};
 
@@ -67,6 +69,24 @@ pub struct View {
 }
 
 impl View {
+    /// The view of `w` (already in the upper hemisphere) with Smith's `Λ(w)` and the
+    /// distribution's own `extra`: the visible-normal factor `G1/cos θ = 1/((1 + Λ) cos θ)`
+    /// is finite as `cos θ → 0`, where `Λ` grows as `1/cos θ`, and `0` for a tangent `w`.
+    #[inline(always)]
+    #[must_use]
+    pub(crate) fn with_lambda(w: Vec3, lambda: f32, extra: [f32; 6]) -> Self {
+        Self {
+            w,
+            lambda,
+            visible: if w.z > 0.0 {
+                1.0 / ((1.0 + lambda) * w.z)
+            } else {
+                0.0
+            },
+            extra,
+        }
+    }
+
     /// The density of the normals visible from the view, given `d = D(m)`:
     /// `D_w(m) = G1(w) max(0, w·m) D(m) / cos θw` (Heitz & d'Eon 2014, eq. 2).
     #[inline(always)]
@@ -228,18 +248,7 @@ pub trait NormalDistribution {
     #[must_use]
     fn view(&self, w: Vec3) -> View {
         let w = upper(w);
-        let lambda = self.lambda(w);
-        View {
-            w,
-            lambda,
-            // G1/cos θ = 1 / ((1 + Λ) cos θ): finite as cos θ → 0, where Λ grows as 1/cos θ.
-            visible: if w.z > 0.0 {
-                1.0 / ((1.0 + lambda) * w.z)
-            } else {
-                0.0
-            },
-            extra: [0.0; 6],
-        }
+        View::with_lambda(w, self.lambda(w), [0.0; 6])
     }
 
     /// The distribution of normals visible from `w` (Heitz & d'Eon 2014, eq. 2):
