@@ -390,11 +390,9 @@ impl<S: Spectrum> Schlick<S> {
         })
     }
 
-    /// The normal-incidence reflectance `f0`.
-    #[inline]
-    #[must_use]
-    pub fn f0(&self) -> S {
-        self.f0
+    getters! {
+        /// The normal-incidence reflectance `f0`.
+        f0: S,
     }
 }
 

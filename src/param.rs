@@ -431,18 +431,11 @@ impl<S: Spectrum> ComplexIor<S> {
         Ok(Self { eta, k })
     }
 
-    /// The real part `η`.
-    #[inline]
-    #[must_use]
-    pub fn eta(&self) -> S {
-        self.eta
-    }
-
-    /// The extinction coefficient `κ`.
-    #[inline]
-    #[must_use]
-    pub fn k(&self) -> S {
-        self.k
+    getters! {
+        /// The real part `η`.
+        eta: S,
+        /// The extinction coefficient `κ`.
+        k: S,
     }
 
     /// The normal-incidence reflectance `F0 = ((η − 1)² + κ²) / ((η + 1)² + κ²)` per channel

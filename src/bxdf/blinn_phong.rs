@@ -167,32 +167,15 @@ impl<S: Spectrum> BlinnPhong<S> {
         })
     }
 
-    /// The diffuse weight `k_d` ([the handout's](crate::handouts#seed-003) `R`).
-    #[inline]
-    #[must_use]
-    pub fn kd(&self) -> S {
-        self.kd
-    }
-
-    /// The specular weight `k_s`.
-    #[inline]
-    #[must_use]
-    pub fn ks(&self) -> S {
-        self.ks
-    }
-
-    /// The exponent `p`.
-    #[inline]
-    #[must_use]
-    pub fn exponent(&self) -> f32 {
-        self.exponent
-    }
-
-    /// Which lobe.
-    #[inline]
-    #[must_use]
-    pub fn form(&self) -> BlinnPhongForm {
-        self.form
+    getters! {
+        /// The diffuse weight `k_d` ([the handout's](crate::handouts#seed-003) `R`).
+        kd: S,
+        /// The specular weight `k_s`.
+        ks: S,
+        /// The exponent `p`.
+        exponent: f32,
+        /// Which lobe.
+        form: BlinnPhongForm,
     }
 
     /// The directional albedo at normal incidence, in closed form:
@@ -283,13 +266,7 @@ impl<S: Spectrum> Prepare for BlinnPhong<S> {
         if !usable_pdf(pdf) {
             return None;
         }
-        Some(BxdfSample {
-            wi,
-            f: self.value(cos_pow),
-            pdf,
-            lobe: lobe_kind,
-            eta: 1.0,
-        })
+        Some(BxdfSample::new(wi, self.value(cos_pow), pdf, lobe_kind))
     }
 
     #[inline]

@@ -193,11 +193,9 @@ impl<D: NormalDistribution, F: FresnelAverage> CompensatedMicrofacet<D, F> {
         &self.albedo
     }
 
-    /// Which compensation.
-    #[inline]
-    #[must_use]
-    pub fn compensation(&self) -> Compensation {
-        self.compensation
+    getters! {
+        /// Which compensation.
+        compensation: Compensation,
     }
 
     /// Kulla & Conty's `F_ms = F_avg² E_avg / (1 − F_avg (1 − E_avg))`: the colour of the
@@ -325,13 +323,12 @@ impl<D: NormalDistribution, F: FresnelAverage> Prepare for CompensatedMicrofacet
         if !(pdf > 0.0 && pdf.is_finite()) {
             return None;
         }
-        Some(BxdfSample {
+        Some(BxdfSample::new(
             wi,
-            f: f + self.lobe(at.outgoing, wi),
+            f + self.lobe(at.outgoing, wi),
             pdf,
             lobe,
-            eta: 1.0,
-        })
+        ))
     }
 
     #[inline(always)]

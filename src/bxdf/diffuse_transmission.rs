@@ -150,13 +150,7 @@ impl<S: Spectrum> Prepare for DiffuseTransmission<S> {
         } else {
             Lobes::DIFFUSE | Lobes::TRANSMISSION
         };
-        Some(BxdfSample {
-            wi,
-            f,
-            pdf,
-            lobe,
-            eta: 1.0,
-        })
+        Some(BxdfSample::new(wi, f, pdf, lobe))
     }
 
     #[inline]

@@ -82,18 +82,11 @@ impl<S: Spectrum> DisneyDiffuse<S> {
         })
     }
 
-    /// The reflectance `ρ`.
-    #[inline]
-    #[must_use]
-    pub fn reflectance(&self) -> S {
-        self.reflectance
-    }
-
-    /// The perceptual roughness `r`.
-    #[inline]
-    #[must_use]
-    pub fn roughness(&self) -> Roughness {
-        self.roughness
+    getters! {
+        /// The reflectance `ρ`.
+        reflectance: S,
+        /// The perceptual roughness `r`.
+        roughness: Roughness,
     }
 }
 

@@ -146,18 +146,11 @@ impl<S: Spectrum> EnergyPreservingOrenNayar<S> {
         }
     }
 
-    /// The reflectance (single-scattering albedo) `ρ`.
-    #[inline]
-    #[must_use]
-    pub fn reflectance(&self) -> S {
-        self.reflectance
-    }
-
-    /// The roughness `r`.
-    #[inline]
-    #[must_use]
-    pub fn roughness(&self) -> f32 {
-        self.roughness
+    getters! {
+        /// The reflectance (single-scattering albedo) `ρ`.
+        reflectance: S,
+        /// The roughness `r`.
+        roughness: f32,
     }
 
     /// True when the FON albedo is evaluated exactly rather than by the paper's fit.

@@ -78,18 +78,11 @@ impl<S: Spectrum> Glazed<S> {
         (if total > 0.0 { f / total } else { 0.0 }, f)
     }
 
-    /// The diffuse base's reflectance.
-    #[inline]
-    #[must_use]
-    pub fn reflectance(&self) -> S {
-        self.reflectance
-    }
-
-    /// The coat's relative index `η_inside / η_outside`.
-    #[inline]
-    #[must_use]
-    pub fn eta(&self) -> Eta {
-        self.eta
+    getters! {
+        /// The diffuse base's reflectance.
+        reflectance: S,
+        /// The coat's relative index `η_inside / η_outside`.
+        eta: Eta,
     }
 }
 
@@ -123,13 +116,12 @@ impl<S: Spectrum> Prepare for Glazed<S> {
         let (p_mirror, f) = at.state;
         if uc < p_mirror {
             let wi = Vec3::new(-wo.x, -wo.y, wo.z);
-            return Some(BxdfSample {
+            return Some(BxdfSample::new(
                 wi,
-                f: S::splat(f * delta_scale(wi)?),
-                pdf: p_mirror,
-                lobe: Lobes::SPECULAR_REFLECTION,
-                eta: 1.0,
-            });
+                S::splat(f * delta_scale(wi)?),
+                p_mirror,
+                Lobes::SPECULAR_REFLECTION,
+            ));
         }
         let wi = cosine_hemisphere(u);
         let pdf = (1.0 - p_mirror) * cosine_hemisphere_pdf(wi.z);
@@ -137,13 +129,12 @@ impl<S: Spectrum> Prepare for Glazed<S> {
             return None;
         }
         let t = (1.0 - f) * (1.0 - dielectric(wi.z, self.eta));
-        Some(BxdfSample {
+        Some(BxdfSample::new(
             wi,
-            f: self.reflectance * (t * self.diffuse_scale),
+            self.reflectance * (t * self.diffuse_scale),
             pdf,
-            lobe: Lobes::DIFFUSE_REFLECTION,
-            eta: 1.0,
-        })
+            Lobes::DIFFUSE_REFLECTION,
+        ))
     }
 
     #[inline]

@@ -797,13 +797,7 @@ impl<T: LayerInterface, B: Bxdf> Prepare for Layered<T, B> {
         if !(f.is_finite() && wi.z != 0.0) {
             return None;
         }
-        Some(BxdfSample {
-            wi,
-            f,
-            pdf,
-            lobe,
-            eta: 1.0,
-        })
+        Some(BxdfSample::new(wi, f, pdf, lobe))
     }
 
     fn lobes(&self) -> Lobes {

@@ -182,13 +182,12 @@ impl<D: NormalDistribution, F: Fresnel> Microfacet<D, F> {
         if !usable_pdf(pdf) {
             return None;
         }
-        Some(BxdfSample {
+        Some(BxdfSample::new(
             wi,
-            f: self.value(at, wi, s, s2, d, masking),
+            self.value(at, wi, s, s2, d, masking),
             pdf,
-            lobe: Lobes::GLOSSY_REFLECTION,
-            eta: 1.0,
-        })
+            Lobes::GLOSSY_REFLECTION,
+        ))
     }
 
     /// The masking-shadowing term.

@@ -47,13 +47,12 @@ impl<F: Fresnel> Mirror<F> {
             return None;
         }
         let wi = Vec3::new(-wo.x, -wo.y, wo.z);
-        Some(BxdfSample {
+        Some(BxdfSample::new(
             wi,
-            f: self.fresnel.eval(wo.z) * delta_scale(wi)?,
-            pdf: 1.0,
-            lobe: Lobes::SPECULAR_REFLECTION,
-            eta: 1.0,
-        })
+            self.fresnel.eval(wo.z) * delta_scale(wi)?,
+            1.0,
+            Lobes::SPECULAR_REFLECTION,
+        ))
     }
 }
 

@@ -309,6 +309,23 @@ pub struct BxdfSample<S> {
     pub eta: f32,
 }
 
+impl<S> BxdfSample<S> {
+    /// A sample of `wi` with value `f` and density `pdf` from a lobe of kind `lobe` that does
+    /// not refract (`eta = 1`: reflection, or transmission without a change of medium); a
+    /// refracting model sets [`eta`](Self::eta) after.
+    #[inline(always)]
+    #[must_use]
+    pub fn new(wi: Vec3, f: S, pdf: f32, lobe: Lobes) -> Self {
+        Self {
+            wi,
+            f,
+            pdf,
+            lobe,
+            eta: 1.0,
+        }
+    }
+}
+
 impl<S: Spectrum> BxdfSample<S> {
     /// The throughput weight `f |cos θi| / pdf` a path tracer multiplies by.
     #[inline(always)]
@@ -691,13 +708,12 @@ pub(crate) fn sample_cosine<S>(
     if !usable_pdf(pdf) {
         return None;
     }
-    Some(BxdfSample {
+    Some(BxdfSample::new(
         wi,
-        f: value(wi),
+        value(wi),
         pdf,
-        lobe: Lobes::DIFFUSE_REFLECTION,
-        eta: 1.0,
-    })
+        Lobes::DIFFUSE_REFLECTION,
+    ))
 }
 
 /// The density of [`sample_cosine`]: `cos θi / π` where both directions are above the

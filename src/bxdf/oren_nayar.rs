@@ -114,18 +114,11 @@ impl<S: Spectrum> OrenNayar<S> {
         })
     }
 
-    /// The reflectance `ρ`.
-    #[inline]
-    #[must_use]
-    pub fn reflectance(&self) -> S {
-        self.reflectance
-    }
-
-    /// The roughness `σ`, in radians.
-    #[inline]
-    #[must_use]
-    pub fn sigma(&self) -> f32 {
-        self.sigma
+    getters! {
+        /// The reflectance `ρ`.
+        reflectance: S,
+        /// The roughness `σ`, in radians.
+        sigma: f32,
     }
 
     /// The coefficients `(A, B)` of the formula.

@@ -135,25 +135,13 @@ impl<S: Spectrum> Phong<S> {
         })
     }
 
-    /// The diffuse weight `k_d`.
-    #[inline]
-    #[must_use]
-    pub fn kd(&self) -> S {
-        self.kd
-    }
-
-    /// The glossy weight `k_s`.
-    #[inline]
-    #[must_use]
-    pub fn ks(&self) -> S {
-        self.ks
-    }
-
-    /// The exponent `p`.
-    #[inline]
-    #[must_use]
-    pub fn exponent(&self) -> f32 {
-        self.exponent
+    getters! {
+        /// The diffuse weight `k_d`.
+        kd: S,
+        /// The glossy weight `k_s`.
+        ks: S,
+        /// The exponent `p`.
+        exponent: f32,
     }
 
     /// `k_d + k_s`: the directional albedo at normal incidence, and its maximum over all
@@ -229,13 +217,7 @@ impl<S: Spectrum> Prepare for Phong<S> {
         if !usable_pdf(pdf) {
             return None;
         }
-        Some(BxdfSample {
-            wi,
-            f: self.value(lobe),
-            pdf,
-            lobe: lobe_kind,
-            eta: 1.0,
-        })
+        Some(BxdfSample::new(wi, self.value(lobe), pdf, lobe_kind))
     }
 
     #[inline]

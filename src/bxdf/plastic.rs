@@ -174,11 +174,9 @@ impl<D, S: Spectrum, C> Plastic<D, S, C> {
         if total > 0.0 { e / total } else { 1.0 }
     }
 
-    /// The diffuse base's reflectance.
-    #[inline]
-    #[must_use]
-    pub fn reflectance(&self) -> S {
-        self.reflectance
+    getters! {
+        /// The diffuse base's reflectance.
+        reflectance: S,
     }
 }
 
@@ -288,13 +286,12 @@ impl<D, S: Spectrum, C: Prepare<Spectrum = f32>> Prepare for Plastic<D, S, C> {
         if !usable_pdf(pdf) {
             return None;
         }
-        Some(BxdfSample {
+        Some(BxdfSample::new(
             wi,
-            f: S::splat(coat_f) + self.diffuse(st.t_o, wi),
+            S::splat(coat_f) + self.diffuse(st.t_o, wi),
             pdf,
             lobe,
-            eta: 1.0,
-        })
+        ))
     }
 
     #[inline]

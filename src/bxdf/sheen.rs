@@ -214,18 +214,11 @@ impl<S: Spectrum> Sheen<S> {
         crate::math::safe_sqrt(cos_theta.clamp(0.0, 1.0)) * (TABLE - 1) as f32
     }
 
-    /// The sheen's colour `c`.
-    #[inline]
-    #[must_use]
-    pub fn color(&self) -> S {
-        self.color
-    }
-
-    /// The roughness `r`, as given to [`new`](Self::new).
-    #[inline]
-    #[must_use]
-    pub fn roughness(&self) -> f32 {
-        self.roughness
+    getters! {
+        /// The sheen's colour `c`.
+        color: S,
+        /// The roughness `r`, as given to [`new`](Self::new).
+        roughness: f32,
     }
 
     /// The directional albedo `c E(cos θo)` from the table (linear interpolation), for

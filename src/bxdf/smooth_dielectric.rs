@@ -46,18 +46,11 @@ impl SmoothDielectric {
         Self { mode, ..self }
     }
 
-    /// The relative index `η_inside / η_outside`.
-    #[inline]
-    #[must_use]
-    pub fn eta(&self) -> Eta {
-        self.eta
-    }
-
-    /// Whether the model transports radiance or importance ([`with_mode`](Self::with_mode)).
-    #[inline]
-    #[must_use]
-    pub fn mode(&self) -> TransportMode {
-        self.mode
+    getters! {
+        /// The relative index `η_inside / η_outside`.
+        eta: Eta,
+        /// Whether the model transports radiance or importance ([`with_mode`](Self::with_mode)).
+        mode: TransportMode,
     }
 
     /// `sample` (its lobes are delta lobes: `eval` and `pdf` are zero).
@@ -69,13 +62,12 @@ impl SmoothDielectric {
         let r = dielectric(wo.z, self.eta);
         if uc < r {
             let wi = Vec3::new(-wo.x, -wo.y, wo.z);
-            return Some(BxdfSample {
+            return Some(BxdfSample::new(
                 wi,
-                f: r * delta_scale(wi)?,
-                pdf: r,
-                lobe: Lobes::SPECULAR_REFLECTION,
-                eta: 1.0,
-            });
+                r * delta_scale(wi)?,
+                r,
+                Lobes::SPECULAR_REFLECTION,
+            ));
         }
         let t = 1.0 - r;
         let wi = refract_away(wo, Vec3::Z, self.eta)?;

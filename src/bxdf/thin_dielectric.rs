@@ -42,11 +42,9 @@ impl ThinDielectric {
         }
     }
 
-    /// The relative index `η_inside / η_outside` of the sheet.
-    #[inline]
-    #[must_use]
-    pub fn eta(&self) -> Eta {
-        self.eta
+    getters! {
+        /// The relative index `η_inside / η_outside` of the sheet.
+        eta: Eta,
     }
 
     /// `sample` (its lobes are delta lobes: `eval` and `pdf` are zero).
@@ -64,13 +62,7 @@ impl ThinDielectric {
         if !(p > 0.0) {
             return None;
         }
-        Some(BxdfSample {
-            wi,
-            f: p * delta_scale(wi)?,
-            pdf: p,
-            lobe,
-            eta: 1.0,
-        })
+        Some(BxdfSample::new(wi, p * delta_scale(wi)?, p, lobe))
     }
 }
 

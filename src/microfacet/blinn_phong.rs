@@ -102,11 +102,9 @@ impl BlinnPhongNdf {
         self.smith.is_some()
     }
 
-    /// The exponent `p`.
-    #[inline]
-    #[must_use]
-    pub fn exponent(&self) -> f32 {
-        self.exponent
+    getters! {
+        /// The exponent `p`.
+        exponent: f32,
     }
 
     /// The equivalent Beckmann width `α = √(2/(p + 2))`.

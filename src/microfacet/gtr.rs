@@ -62,11 +62,9 @@ impl Gtr {
         })
     }
 
-    /// The width `α`.
-    #[inline]
-    #[must_use]
-    pub fn alpha(&self) -> f32 {
-        self.alpha
+    getters! {
+        /// The width `α`.
+        alpha: f32,
     }
 
     /// The exponent `γ`.
