@@ -192,13 +192,6 @@ impl Alpha {
             Err(e) => Err(e),
         }
     }
-
-    /// The width as a plain number.
-    #[inline]
-    #[must_use]
-    pub const fn get(self) -> f32 {
-        self.0
-    }
 }
 
 impl From<Roughness> for Alpha {
@@ -225,13 +218,6 @@ impl Roughness {
             Ok(r) => Ok(Self(r)),
             Err(e) => Err(e),
         }
-    }
-
-    /// The roughness as a plain number.
-    #[inline]
-    #[must_use]
-    pub const fn get(self) -> f32 {
-        self.0
     }
 
     /// The microfacet width `α = r²`, raised to [`Alpha::MIN`] for `r < 0.01`.
@@ -264,13 +250,6 @@ impl Ior {
             Ok(v) => Ok(Self(v)),
             Err(e) => Err(e),
         }
-    }
-
-    /// The index as a plain number.
-    #[inline]
-    #[must_use]
-    pub const fn get(self) -> f32 {
-        self.0
     }
 }
 
@@ -322,13 +301,6 @@ impl Eta {
         Ok(Self((1.0 + s) / (1.0 - s)))
     }
 
-    /// The index as a plain number.
-    #[inline]
-    #[must_use]
-    pub const fn get(self) -> f32 {
-        self.0
-    }
-
     /// The reciprocal `1/η`: the same interface seen from the inside.
     #[inline]
     #[must_use]
@@ -345,10 +317,20 @@ impl Eta {
     }
 }
 
-/// `TryFrom<f32>` (the validating constructor) and `From<_> for f32` (the plain number) for
-/// each scalar parameter; the serde impls go through them.
+/// `get` and `From<_> for f32` (the plain number) and `TryFrom<f32>` (the validating
+/// constructor) for each scalar parameter, named in `get`'s doc by `$what`; the serde impls
+/// go through the conversions.
 macro_rules! scalar_conversions {
-    ($($ty:ident),*) => {$(
+    ($($ty:ident $what:literal),*) => {$(
+        impl $ty {
+            #[doc = concat!("The ", $what, " as a plain number.")]
+            #[inline]
+            #[must_use]
+            pub const fn get(self) -> f32 {
+                self.0
+            }
+        }
+
         impl TryFrom<f32> for $ty {
             type Error = ParamError;
 
@@ -367,7 +349,7 @@ macro_rules! scalar_conversions {
     )*};
 }
 
-scalar_conversions!(Alpha, Roughness, Ior, Eta);
+scalar_conversions!(Alpha "width", Roughness "roughness", Ior "index", Eta "index");
 
 /// A conductor's complex index of refraction `η + iκ`, relative to the outside medium,
 /// per channel of the spectrum `S`.

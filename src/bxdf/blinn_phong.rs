@@ -1,14 +1,11 @@
 //! The Blinn-Phong BRDF of [the handouts](crate::handouts#seed-003) ("modified Blinn-Phong") and its
 //! normalised form.
 
-use super::diffuse_glossy::{
-    check_exponent, check_sum, cos_power_norm, diffuse_probability, weighted_lobes,
-};
-use super::{BxdfSample, Lobes, Prepare, both_above, usable_pdf};
+use super::diffuse_glossy::{checked_parameters, cos_power_norm};
 use crate::frame::reflect_away;
 use crate::math::{cos_pow, exp, sqrt};
 use crate::param::ParamError;
-use crate::sampling::{cosine_hemisphere, cosine_hemisphere_pdf};
+use crate::sampling::cosine_hemisphere_pdf;
 use crate::spectrum::Spectrum;
 use core::f32::consts::{FRAC_1_PI, PI};
 use glam::{Vec2, Vec3};
@@ -150,11 +147,7 @@ impl<S: Spectrum> BlinnPhong<S> {
     /// `kd + ks` for a channel where their sum exceeds 1, or `exponent` for NaN or a value
     /// outside `[0, 1e6]`.
     pub fn new(kd: S, ks: S, exponent: f32, form: BlinnPhongForm) -> Result<Self, ParamError> {
-        let kd = crate::param::unit_interval("kd", kd)?;
-        let ks = crate::param::unit_interval("ks", ks)?;
-        check_sum(kd, ks, "kd + ks")?;
-        let p = check_exponent(exponent)?;
-        let p_diffuse = diffuse_probability(kd, ks);
+        let (kd, ks, p, p_diffuse) = checked_parameters(kd, ks, exponent)?;
         Ok(Self {
             kd,
             ks,
@@ -207,14 +200,24 @@ impl<S: Spectrum> BlinnPhong<S> {
 
     /// The BRDF from `(n·h)^p`.
     #[inline]
-    fn value(&self, cos_pow: f32) -> S {
+    fn value(&self, (cos_pow, _): (f32, f32)) -> S {
         self.diffuse_over_pi + self.glossy * cos_pow
     }
 
     /// The mixture density from `cos θi`, `(n·h)^p` and `|wo + wi| = 2 (wo·h)`.
     #[inline]
-    fn density(&self, cos_i: f32, cos_pow: f32, len: f32) -> f32 {
+    fn density(&self, cos_i: f32, (cos_pow, len): (f32, f32)) -> f32 {
         self.p_diffuse * cosine_hemisphere_pdf(cos_i) + self.pdf_glossy * cos_pow / len
+    }
+
+    /// A direction of the glossy lobe: `wo` reflected about a half vector drawn from
+    /// `cos^p θh`; below the surface when `wo·h ≤ 0`, which the caller refuses.
+    #[inline]
+    fn sample_glossy(&self, wo: Vec3, u: Vec2) -> Vec3 {
+        reflect_away(
+            wo,
+            crate::sampling::cosine_power_hemisphere(u, self.exponent),
+        )
     }
 }
 
@@ -227,71 +230,4 @@ fn lobe_factor(form: BlinnPhongForm, p: f32) -> f32 {
     }
 }
 
-impl<S: Spectrum> Prepare for BlinnPhong<S> {
-    type Spectrum = S;
-    type Prepared = Vec3;
-
-    #[inline]
-    fn prepare(&self, wo: Vec3) -> Vec3 {
-        wo
-    }
-
-    #[inline]
-    fn eval_prepared(&self, &wo: &Vec3, wi: Vec3) -> S {
-        if both_above(wo, wi) {
-            self.value(self.lobe(wo, wi).0)
-        } else {
-            S::zero()
-        }
-    }
-
-    #[inline]
-    fn sample_prepared(&self, &wo: &Vec3, u: Vec2, uc: f32) -> Option<BxdfSample<S>> {
-        if !(wo.z > 0.0) {
-            return None;
-        }
-        let (wi, lobe_kind) = if uc < self.p_diffuse {
-            (cosine_hemisphere(u), Lobes::DIFFUSE_REFLECTION)
-        } else {
-            let h = crate::sampling::cosine_power_hemisphere(u, self.exponent);
-            (reflect_away(wo, h), Lobes::GLOSSY_REFLECTION)
-        };
-        // Also catches wo·h ≤ 0, which reflects wo below the surface.
-        if !(wi.z > 0.0) {
-            return None;
-        }
-        // One evaluation of the lobe serves both the value and the density.
-        let (cos_pow, len) = self.lobe(wo, wi);
-        let pdf = self.density(wi.z, cos_pow, len);
-        if !usable_pdf(pdf) {
-            return None;
-        }
-        Some(BxdfSample::new(wi, self.value(cos_pow), pdf, lobe_kind))
-    }
-
-    #[inline]
-    fn pdf_prepared(&self, &wo: &Vec3, wi: Vec3) -> f32 {
-        if both_above(wo, wi) {
-            let (cos_pow, len) = self.lobe(wo, wi);
-            self.density(wi.z, cos_pow, len)
-        } else {
-            0.0
-        }
-    }
-
-    #[inline]
-    fn eval_pdf_prepared(&self, &wo: &Vec3, wi: Vec3) -> (S, f32) {
-        if both_above(wo, wi) {
-            // One evaluation of the lobe serves both.
-            let (cos_pow, len) = self.lobe(wo, wi);
-            (self.value(cos_pow), self.density(wi.z, cos_pow, len))
-        } else {
-            (S::zero(), 0.0)
-        }
-    }
-
-    #[inline]
-    fn lobes(&self) -> Lobes {
-        weighted_lobes(self.kd, self.ks)
-    }
-}
+diffuse_glossy_model!(BlinnPhong);

@@ -6,8 +6,22 @@ use crate::param::ParamError;
 use crate::spectrum::Spectrum;
 use core::f32::consts::FRAC_1_PI;
 
+/// The weights `kd`, `ks` and the exponent of a Phong-family model, validated, with the
+/// probability of sampling its diffuse lobe: `(kd, ks, p, p_diffuse)`.
+pub(super) fn checked_parameters<S: Spectrum>(
+    kd: S,
+    ks: S,
+    exponent: f32,
+) -> Result<(S, S, f32, f32), ParamError> {
+    let kd = crate::param::unit_interval("kd", kd)?;
+    let ks = crate::param::unit_interval("ks", ks)?;
+    check_sum(kd, ks, "kd + ks")?;
+    let p = check_exponent(exponent)?;
+    Ok((kd, ks, p, diffuse_probability(kd, ks)))
+}
+
 /// Refuses a channel where the two weights sum above 1; the error names `param`.
-pub(super) fn check_sum<S: Spectrum>(kd: S, ks: S, param: &'static str) -> Result<(), ParamError> {
+fn check_sum<S: Spectrum>(kd: S, ks: S, param: &'static str) -> Result<(), ParamError> {
     let sum = kd + ks;
     for i in 0..S::CHANNELS {
         let s = sum.channel(i);
@@ -19,7 +33,7 @@ pub(super) fn check_sum<S: Spectrum>(kd: S, ks: S, param: &'static str) -> Resul
 }
 
 /// Accepts an exponent in `[0, 1e6]`, refusing NaN.
-pub(super) fn check_exponent(p: f32) -> Result<f32, ParamError> {
+fn check_exponent(p: f32) -> Result<f32, ParamError> {
     if (0.0..=1e6).contains(&p) {
         Ok(p)
     } else {
@@ -29,14 +43,14 @@ pub(super) fn check_exponent(p: f32) -> Result<f32, ParamError> {
 
 /// The probability of sampling the diffuse lobe: the diffuse share of the channel-averaged
 /// weights, `1` when both are black.
-pub(super) fn diffuse_probability<S: Spectrum>(kd: S, ks: S) -> f32 {
+fn diffuse_probability<S: Spectrum>(kd: S, ks: S) -> f32 {
     let (d, s) = (kd.average(), ks.average());
     if d + s > 0.0 { d / (d + s) } else { 1.0 }
 }
 
 /// The lobes with a non-zero weight (diffuse alone for a black model: what its sampler
 /// reports).
-pub(super) fn weighted_lobes<S: Spectrum>(kd: S, ks: S) -> Lobes {
+pub(crate) fn weighted_lobes<S: Spectrum>(kd: S, ks: S) -> Lobes {
     let mut lobes = Lobes::NONE;
     if !kd.is_black() || ks.is_black() {
         lobes |= Lobes::DIFFUSE_REFLECTION;

@@ -110,6 +110,80 @@ macro_rules! delta_model {
     };
 }
 
+/// The [`Prepare`] impl of a Phong-family model (`diffuse_glossy.rs`): a one-sided mixture of
+/// a cosine-sampled diffuse lobe, chosen with probability `self.p_diffuse`, and a glossy lobe.
+/// The model supplies `fn lobe(&self, wo, wi) -> L` (what value and density share, evaluated
+/// once), `fn value(&self, L) -> S`, `fn density(&self, cos θi, L) -> f32`, the glossy sampler
+/// `fn sample_glossy(&self, wo, u) -> Vec3` and the weights `kd`, `ks`.
+macro_rules! diffuse_glossy_model {
+    ($t:ident) => {
+        impl<S: $crate::spectrum::Spectrum> $crate::bxdf::Prepare for $t<S> {
+            type Spectrum = S;
+            type Prepared = glam::Vec3;
+
+            #[inline]
+            fn prepare(&self, wo: glam::Vec3) -> glam::Vec3 {
+                wo
+            }
+
+            #[inline]
+            fn eval_prepared(&self, &wo: &glam::Vec3, wi: glam::Vec3) -> S {
+                self.eval_pdf_prepared(&wo, wi).0
+            }
+
+            #[inline]
+            fn pdf_prepared(&self, &wo: &glam::Vec3, wi: glam::Vec3) -> f32 {
+                self.eval_pdf_prepared(&wo, wi).1
+            }
+
+            #[inline]
+            fn eval_pdf_prepared(&self, &wo: &glam::Vec3, wi: glam::Vec3) -> (S, f32) {
+                if $crate::bxdf::both_above(wo, wi) {
+                    // One evaluation of the lobe serves both.
+                    let lobe = self.lobe(wo, wi);
+                    (self.value(lobe), self.density(wi.z, lobe))
+                } else {
+                    (S::zero(), 0.0)
+                }
+            }
+
+            #[inline]
+            fn sample_prepared(
+                &self,
+                &wo: &glam::Vec3,
+                u: glam::Vec2,
+                uc: f32,
+            ) -> Option<$crate::bxdf::BxdfSample<S>> {
+                use $crate::bxdf::Lobes;
+                if !(wo.z > 0.0) {
+                    return None;
+                }
+                let (wi, kind) = if uc < self.p_diffuse {
+                    (
+                        $crate::sampling::cosine_hemisphere(u),
+                        Lobes::DIFFUSE_REFLECTION,
+                    )
+                } else {
+                    (self.sample_glossy(wo, u), Lobes::GLOSSY_REFLECTION)
+                };
+                // Also catches a glossy direction turned below the surface.
+                if !(wi.z > 0.0) {
+                    return None;
+                }
+                let lobe = self.lobe(wo, wi);
+                let pdf = self.density(wi.z, lobe);
+                $crate::bxdf::usable_pdf(pdf)
+                    .then(|| $crate::bxdf::BxdfSample::new(wi, self.value(lobe), pdf, kind))
+            }
+
+            #[inline]
+            fn lobes(&self) -> $crate::bxdf::Lobes {
+                $crate::bxdf::diffuse_glossy::weighted_lobes(self.kd, self.ks)
+            }
+        }
+    };
+}
+
 mod blinn_phong;
 mod coated_conductor;
 mod coated_diffuse;

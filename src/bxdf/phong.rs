@@ -1,13 +1,10 @@
 //! The modified, normalised Phong BRDF of Lafortune & Willems (1994).
 
-use super::diffuse_glossy::{
-    check_exponent, check_sum, cos_power_norm, diffuse_probability, weighted_lobes,
-};
-use super::{BxdfSample, Lobes, Prepare, both_above, usable_pdf};
+use super::diffuse_glossy::{checked_parameters, cos_power_norm};
 use crate::frame::Frame;
 use crate::math::{exp, ln_1p, powf, sqrt};
 use crate::param::ParamError;
-use crate::sampling::{cosine_hemisphere, cosine_hemisphere_pdf};
+use crate::sampling::cosine_hemisphere_pdf;
 use crate::spectrum::Spectrum;
 use core::f32::consts::FRAC_1_PI;
 use glam::{Vec2, Vec3};
@@ -119,11 +116,7 @@ impl<S: Spectrum> Phong<S> {
     /// `kd + ks` for a channel whose sum exceeds 1, or `exponent` for NaN or a value outside
     /// `[0, 1e6]`.
     pub fn new(kd: S, ks: S, exponent: f32) -> Result<Self, ParamError> {
-        let kd = crate::param::unit_interval("kd", kd)?;
-        let ks = crate::param::unit_interval("ks", ks)?;
-        check_sum(kd, ks, "kd + ks")?;
-        let p = check_exponent(exponent)?;
-        let p_diffuse = diffuse_probability(kd, ks);
+        let (kd, ks, p, p_diffuse) = checked_parameters(kd, ks, exponent)?;
         Ok(Self {
             kd,
             ks,
@@ -173,78 +166,17 @@ impl<S: Spectrum> Phong<S> {
     fn density(&self, cos_i: f32, lobe: f32) -> f32 {
         self.p_diffuse * cosine_hemisphere_pdf(cos_i) + self.pdf_glossy * lobe
     }
-}
 
-impl<S: Spectrum> Prepare for Phong<S> {
-    type Spectrum = S;
-    type Prepared = Vec3;
-
+    /// A direction of the glossy lobe: `cos^p` around the mirror direction of `wo`.
     #[inline]
-    fn prepare(&self, wo: Vec3) -> Vec3 {
-        wo
-    }
-
-    #[inline]
-    fn eval_prepared(&self, &wo: &Vec3, wi: Vec3) -> S {
-        if both_above(wo, wi) {
-            self.value(self.lobe(wo, wi))
-        } else {
-            S::zero()
-        }
-    }
-
-    #[inline]
-    fn sample_prepared(&self, &wo: &Vec3, u: Vec2, uc: f32) -> Option<BxdfSample<S>> {
-        if !(wo.z > 0.0) {
-            return None;
-        }
-        let (wi, lobe_kind) = if uc < self.p_diffuse {
-            (cosine_hemisphere(u), Lobes::DIFFUSE_REFLECTION)
-        } else {
-            let r = Vec3::new(-wo.x, -wo.y, wo.z);
-            let local = crate::sampling::cosine_power_hemisphere(u, self.exponent);
-            (
-                Frame::from_normal(r).to_world(local),
-                Lobes::GLOSSY_REFLECTION,
-            )
-        };
-        if !(wi.z > 0.0) {
-            return None;
-        }
-        // One evaluation of the lobe serves both the value and the density.
-        let lobe = self.lobe(wo, wi);
-        let pdf = self.density(wi.z, lobe);
-        if !usable_pdf(pdf) {
-            return None;
-        }
-        Some(BxdfSample::new(wi, self.value(lobe), pdf, lobe_kind))
-    }
-
-    #[inline]
-    fn pdf_prepared(&self, &wo: &Vec3, wi: Vec3) -> f32 {
-        if both_above(wo, wi) {
-            self.density(wi.z, self.lobe(wo, wi))
-        } else {
-            0.0
-        }
-    }
-
-    #[inline]
-    fn eval_pdf_prepared(&self, &wo: &Vec3, wi: Vec3) -> (S, f32) {
-        if both_above(wo, wi) {
-            // One evaluation of the lobe serves both.
-            let lobe = self.lobe(wo, wi);
-            (self.value(lobe), self.density(wi.z, lobe))
-        } else {
-            (S::zero(), 0.0)
-        }
-    }
-
-    #[inline]
-    fn lobes(&self) -> Lobes {
-        weighted_lobes(self.kd, self.ks)
+    fn sample_glossy(&self, wo: Vec3, u: Vec2) -> Vec3 {
+        let r = Vec3::new(-wo.x, -wo.y, wo.z);
+        let local = crate::sampling::cosine_power_hemisphere(u, self.exponent);
+        Frame::from_normal(r).to_world(local)
     }
 }
+
+diffuse_glossy_model!(Phong);
 
 /// `cos^p` of an angle given `1 − cos ≥ 0`; zero at and beyond 90° (`1 − cos ≥ 1`), even for
 /// `p = 0`. Near the axis it is `exp(p ln(1 − t))` from the precise `t = 1 − cos`.

@@ -52,93 +52,65 @@ impl Widths {
     }
 }
 
-/// [`Ggx`] on the wire: `{ "alpha": 0.3 }` or `{ "alpha_x": 0.3, "alpha_y": 0.1 }`, and
-/// `"bounded_reflection": false` when it is off.
-#[derive(serde::Serialize, serde::Deserialize)]
-#[serde(rename = "Ggx", deny_unknown_fields)]
-struct GgxRepr {
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    alpha: Option<f32>,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    alpha_x: Option<f32>,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    alpha_y: Option<f32>,
-    #[serde(default = "yes", skip_serializing_if = "is_true")]
-    bounded_reflection: bool,
+/// `Serialize` and `Deserialize` for an anisotropic distribution through its wire struct,
+/// which it also defines: the widths as [`Widths`] gives them and one switch, read by the
+/// getter of the switch's name and set again by its `with_` method.
+macro_rules! widths_wire {
+    (
+        $(#[$attr:meta])*
+        $ty:ident as $name:literal $repr:ident {
+            $(#[$fattr:meta])* $field:ident: $fty:ty => $with:ident
+        }
+    ) => {
+        $(#[$attr])*
+        #[derive(serde::Serialize, serde::Deserialize)]
+        #[serde(rename = $name, deny_unknown_fields)]
+        struct $repr {
+            #[serde(default, skip_serializing_if = "Option::is_none")]
+            alpha: Option<f32>,
+            #[serde(default, skip_serializing_if = "Option::is_none")]
+            alpha_x: Option<f32>,
+            #[serde(default, skip_serializing_if = "Option::is_none")]
+            alpha_y: Option<f32>,
+            $(#[$fattr])*
+            $field: $fty,
+        }
+
+        impl Serialize for $ty {
+            fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+                let w = Widths::of(self.alpha());
+                let (alpha, alpha_x, alpha_y) = (w.alpha, w.alpha_x, w.alpha_y);
+                let $field = self.$field();
+                $repr { alpha, alpha_x, alpha_y, $field }.serialize(serializer)
+            }
+        }
+
+        impl<'de> Deserialize<'de> for $ty {
+            fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+                let r = $repr::deserialize(deserializer)?;
+                let w = Widths { alpha: r.alpha, alpha_x: r.alpha_x, alpha_y: r.alpha_y };
+                let (ax, ay) = w.alphas()?;
+                Ok(<$ty>::new(ax, ay).$with(r.$field))
+            }
+        }
+    };
 }
 
-impl Serialize for Ggx {
-    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
-        let Widths {
-            alpha,
-            alpha_x,
-            alpha_y,
-        } = Widths::of(self.alpha());
-        GgxRepr {
-            alpha,
-            alpha_x,
-            alpha_y,
-            bounded_reflection: self.bounded_reflection(),
-        }
-        .serialize(serializer)
+widths_wire! {
+    /// [`Ggx`] on the wire: `{ "alpha": 0.3 }` or `{ "alpha_x": 0.3, "alpha_y": 0.1 }`, and
+    /// `"bounded_reflection": false` when it is off.
+    Ggx as "Ggx" GgxRepr {
+        #[serde(default = "yes", skip_serializing_if = "is_true")]
+        bounded_reflection: bool => with_bounded_reflection
     }
 }
 
-impl<'de> Deserialize<'de> for Ggx {
-    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-        let r = GgxRepr::deserialize(deserializer)?;
-        let (ax, ay) = Widths {
-            alpha: r.alpha,
-            alpha_x: r.alpha_x,
-            alpha_y: r.alpha_y,
-        }
-        .alphas()?;
-        Ok(Ggx::new(ax, ay).with_bounded_reflection(r.bounded_reflection))
-    }
-}
-
-/// [`Beckmann`] on the wire: the widths as for [`Ggx`], and `"masking": "walter_rational"`
-/// when it does not use the exact Smith `Λ`.
-#[derive(serde::Serialize, serde::Deserialize)]
-#[serde(rename = "Beckmann", deny_unknown_fields)]
-struct BeckmannRepr {
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    alpha: Option<f32>,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    alpha_x: Option<f32>,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    alpha_y: Option<f32>,
-    #[serde(default, skip_serializing_if = "is_default")]
-    masking: BeckmannMasking,
-}
-
-impl Serialize for Beckmann {
-    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
-        let Widths {
-            alpha,
-            alpha_x,
-            alpha_y,
-        } = Widths::of(self.alpha());
-        BeckmannRepr {
-            alpha,
-            alpha_x,
-            alpha_y,
-            masking: self.masking(),
-        }
-        .serialize(serializer)
-    }
-}
-
-impl<'de> Deserialize<'de> for Beckmann {
-    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-        let r = BeckmannRepr::deserialize(deserializer)?;
-        let (ax, ay) = Widths {
-            alpha: r.alpha,
-            alpha_x: r.alpha_x,
-            alpha_y: r.alpha_y,
-        }
-        .alphas()?;
-        Ok(Beckmann::new(ax, ay).with_masking(r.masking))
+widths_wire! {
+    /// [`Beckmann`] on the wire: the widths as for [`Ggx`], and
+    /// `"masking": "walter_rational"` when it does not use the exact Smith `Λ`.
+    Beckmann as "Beckmann" BeckmannRepr {
+        #[serde(default, skip_serializing_if = "is_default")]
+        masking: BeckmannMasking => with_masking
     }
 }
 
