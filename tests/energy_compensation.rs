@@ -161,24 +161,28 @@ fn split_albedo(
     )
 }
 
-/// One furnace point: the compensated model's albedo at `wo` ([`split_albedo`]: the
-/// single-scattering lobe by its stratified sampler, the compensation by quadrature; and by
-/// the whole model's own sampler with `sampled = (samples, seed)` when `samples > 0`) beside
-/// the single-scattering model's.
-fn furnace_point(
-    label: String,
-    compensated: &dyn Bxdf<Spectrum = f32>,
-    single: &dyn Bxdf<Spectrum = f32>,
-    wo: Vec3,
+/// The furnace points of one model, one per polar angle of `wo` in `thetas`, labelled `label`
+/// and the angle: the compensated model's albedo ([`split_albedo`]: the single-scattering
+/// lobe by its stratified sampler, the compensation by quadrature; and by the whole model's
+/// own sampler with `sampled = (samples, seed)` when `samples > 0`) beside the
+/// single-scattering model's.
+fn furnace_points(
+    rows: &mut Vec<Furnace>,
+    label: &str,
+    (compensated, single): (&dyn Bxdf<Spectrum = f32>, &dyn Bxdf<Spectrum = f32>),
+    thetas: &[f32],
     (samples, seed): (usize, u64),
-) -> Furnace {
-    let (e, ss) = split_albedo(compensated, single, wo);
-    Furnace {
-        label,
-        compensated: e,
-        sampled: (samples > 0)
-            .then(|| albedo_sampled(compensated, wo, &BxdfCheck { samples, seed })),
-        single: ss,
+) {
+    for &theta in thetas {
+        let wo = dir(theta);
+        let (e, ss) = split_albedo(compensated, single, wo);
+        rows.push(Furnace {
+            label: format!("{label} θo = {theta:>3}°"),
+            compensated: e,
+            sampled: (samples > 0)
+                .then(|| albedo_sampled(compensated, wo, &BxdfCheck { samples, seed })),
+            single: ss,
+        });
     }
 }
 
@@ -254,15 +258,14 @@ fn conductor_furnace<D: TabulatedAlbedo + Copy>(
             NoFresnel::<f32>::new(),
         );
         let compensated = single.with_energy_compensation().unwrap();
-        for &theta in thetas {
-            rows.push(furnace_point(
-                format!("α = {alpha:<4} θo = {theta:>2}°"),
-                &compensated,
-                &single,
-                dir(theta),
-                (sampled, 29),
-            ));
-        }
+        let label = format!("α = {alpha:<4}");
+        furnace_points(
+            &mut rows,
+            &label,
+            (&compensated, &single),
+            thetas,
+            (sampled, 29),
+        );
     }
     rows
 }
@@ -404,15 +407,9 @@ fn dielectric_furnace<D: TabulatedDielectric + Copy>(
             let single =
                 RoughDielectric::new(dist(a(alpha)), eta(n)).with_mode(TransportMode::Importance);
             let c = single.with_energy_compensation().unwrap();
-            for theta in DIELECTRIC_THETAS {
-                rows.push(furnace_point(
-                    format!("η = {n:<4} α = {alpha:<4} θo = {theta:>3}°"),
-                    &c,
-                    &single,
-                    dir(theta),
-                    (sampled, 37),
-                ));
-            }
+            let label = format!("η = {n:<4} α = {alpha:<4}");
+            let thetas = &DIELECTRIC_THETAS;
+            furnace_points(&mut rows, &label, (&c, &single), thetas, (sampled, 37));
         }
     }
     rows
