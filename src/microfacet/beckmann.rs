@@ -1,7 +1,9 @@
 //! The Beckmann distribution, anisotropic, with exact Smith masking or Walter's rational fit.
 
 use super::{NormalDistribution, SampleDCos, Sampling, View, Widths, upper};
-use crate::math::{abs, copysign, erf_inv_approx, erfc, exp, ln, ln_1p, sin_cos_turns, sqrt};
+use crate::math::{
+    abs, copysign, erf_inv_approx, erfcx, erfcx_at, exp, ln, ln_1p, sin_cos_turns, sqrt,
+};
 use crate::param::Alpha;
 use glam::{Vec2, Vec3};
 
@@ -108,14 +110,23 @@ impl Beckmann {
     }
 }
 
-/// The exact Beckmann Smith `Λ(a)`, written with `erfc` so that its small tail keeps digits.
+/// The exact Beckmann Smith `Λ(a)`, written with `erfcx` so that its small tail keeps
+/// digits: `(erf a − 1)/2 + e^(−a²)/(2a√π) = e^(−a²) (1/(a√π) − erfcx a) / 2`, one
+/// exponential; `+∞` at `a = 0`, and `0` where `e^(−a²)` is zero in `f32` (beyond
+/// `a = 10.2`) or `a` is NaN (`0/0`).
 #[inline]
 fn lambda_exact(a: f32) -> f32 {
-    if a == f32::INFINITY {
+    if !(a < 10.25) {
         return 0.0;
     }
-    // (erf a − 1)/2 + e^(−a²)/(2a√π) = (e^(−a²)/(a√π) − erfc a) / 2; +∞ at a = 0.
-    (0.5 * (exp(-a * a) * FRAC_1_SQRT_PI / a - erfc(a))).max(0.0)
+    let (inv_a, t) = if a > 1e-18 {
+        // 1/a and erfcx's t = 2/(2 + a) from one division.
+        let q = 1.0 / (a * (2.0 + a));
+        ((2.0 + a) * q, 2.0 * a * q)
+    } else {
+        (1.0 / a, 1.0)
+    };
+    (0.5 * exp(-a * a) * (FRAC_1_SQRT_PI * inv_a - erfcx_at(t))).max(0.0)
 }
 
 /// Walter's rational `G1(a)` (Walter et al. 2007, eq. 27).
@@ -190,6 +201,7 @@ impl NormalDistribution for Beckmann {
     /// `C(x) = cos θ · erfc(−x)/2 + sin θ · e^(−x²)/(2√π)`, is inverted by Newton steps kept
     /// inside a shrinking bracket. The stretched view `(αx wx, αy wy, wz)` is not normalised:
     /// the inversion only needs `cos θ` and `sin θ` up to a common factor.
+    #[inline]
     fn sample(&self, view: &View, u: Vec2) -> Vec3 {
         let [x, y, r, ..] = view.extra;
         let cos_t = view.w.z;
@@ -274,11 +286,14 @@ fn slope_start(cos_t: f32, sin_t: f32, u: f32) -> f32 {
 /// resolution; each step costs one `erfc` and one `exp`.
 fn sample_visible_slope(cos_t: f32, sin_t: f32, u: f32, total: f32) -> f32 {
     // The unnormalised CDF C(x) and its derivative C'(x) = (cos θ − x sin θ) e^(−x²)/√π,
-    // sharing the one exponential.
+    // sharing the one exponential: erfc(−x) = erfcx(|x|) e^(−x²), or 2 minus that for x > 0.
     let cdf_slope = |x: f32| {
-        let e = exp(-x * x) * FRAC_1_SQRT_PI;
+        let e = exp(-x * x);
+        let tail = erfcx(abs(x)) * e;
+        let erfc_neg = if x > 0.0 { 2.0 - tail } else { tail };
+        let e = e * FRAC_1_SQRT_PI;
         (
-            0.5 * (cos_t * erfc(-x) + sin_t * e),
+            0.5 * (cos_t * erfc_neg + sin_t * e),
             (cos_t - x * sin_t) * e,
         )
     };
