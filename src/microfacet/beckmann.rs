@@ -1,9 +1,7 @@
 //! The Beckmann distribution, anisotropic, with exact Smith masking or Walter's rational fit.
 
 use super::{NormalDistribution, SampleDCos, Sampling, View, Widths, upper};
-use crate::math::{
-    abs, copysign, erf_inv_approx, erfcx, erfcx_at, exp, ln, ln_1p, sin_cos_turns, sqrt,
-};
+use crate::math::{abs, copysign, erf_inv_approx, erfcx_at, exp, ln, ln_1p, sin_cos_turns, sqrt};
 use crate::param::Alpha;
 use glam::{Vec2, Vec3};
 
@@ -289,7 +287,7 @@ fn sample_visible_slope(cos_t: f32, sin_t: f32, u: f32, total: f32) -> f32 {
     // sharing the one exponential: erfc(−x) = erfcx(|x|) e^(−x²), or 2 minus that for x > 0.
     let cdf_slope = |x: f32| {
         let e = exp(-x * x);
-        let tail = erfcx(abs(x)) * e;
+        let tail = erfcx_at(1.0 / (1.0 + 0.5 * abs(x))) * e;
         let erfc_neg = if x > 0.0 { 2.0 - tail } else { tail };
         let e = e * FRAC_1_SQRT_PI;
         (
