@@ -256,8 +256,14 @@ pub(crate) fn erfcx_at(t: f32) -> f32 {
 /// [`erfcx`]`(|x|) · e^(−x²)`, and `2 −` that for negative `x`.
 #[must_use]
 pub fn erfc(x: f32) -> f32 {
-    let z = abs(x);
-    let r = erfcx_at(1.0 / (1.0 + 0.5 * z)) * exp(-z * z);
+    erfc_given_exp(x, exp(-x * x))
+}
+
+/// [`erfc`]`(x)` given `e = e^(−x²)`, for a caller that needs that exponential too.
+#[inline(always)]
+#[must_use]
+pub(crate) fn erfc_given_exp(x: f32, e: f32) -> f32 {
+    let r = erfcx_at(1.0 / (1.0 + 0.5 * abs(x))) * e;
     if x >= 0.0 { r } else { 2.0 - r }
 }
 

@@ -1,7 +1,9 @@
 //! The Beckmann distribution, anisotropic, with exact Smith masking or Walter's rational fit.
 
 use super::{NormalDistribution, SampleDCos, Sampling, View, Widths, upper};
-use crate::math::{abs, copysign, erf_inv_approx, erfcx_at, exp, ln, ln_1p, sin_cos_turns, sqrt};
+use crate::math::{
+    abs, copysign, erf_inv_approx, erfc_given_exp, erfcx_at, exp, ln, ln_1p, sin_cos_turns, sqrt,
+};
 use crate::param::Alpha;
 use glam::{Vec2, Vec3};
 
@@ -284,11 +286,10 @@ fn slope_start(cos_t: f32, sin_t: f32, u: f32) -> f32 {
 /// resolution; each step costs one `erfc` and one `exp`.
 fn sample_visible_slope(cos_t: f32, sin_t: f32, u: f32, total: f32) -> f32 {
     // The unnormalised CDF C(x) and its derivative C'(x) = (cos θ − x sin θ) e^(−x²)/√π,
-    // sharing the one exponential: erfc(−x) = erfcx(|x|) e^(−x²), or 2 minus that for x > 0.
+    // sharing the one exponential.
     let cdf_slope = |x: f32| {
         let e = exp(-x * x);
-        let tail = erfcx_at(1.0 / (1.0 + 0.5 * abs(x))) * e;
-        let erfc_neg = if x > 0.0 { 2.0 - tail } else { tail };
+        let erfc_neg = erfc_given_exp(-x, e);
         let e = e * FRAC_1_SQRT_PI;
         (
             0.5 * (cos_t * erfc_neg + sin_t * e),
