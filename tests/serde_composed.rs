@@ -5,7 +5,7 @@
 
 mod common;
 
-use common::wire::{assert_refused, assert_same_values, assert_wire, round_trip};
+use common::wire::{assert_refused, assert_wire, round_trip};
 use lobe::bxdf::{
     CoatedConductor, CoatedDiffuse, CompensatedDielectric, CompensatedMicrofacet,
     CompensatedPlastic, Compensation, DiffuseTransmission, Lambert, Layered, Microfacet, Mix,
@@ -49,7 +49,7 @@ fn compensated_conductors_are_the_single_scattering_model_and_the_compensation()
         "the default is left out: {json}"
     );
     let read: CompensatedMicrofacet<Ggx, Conductor<Vec3>> = serde_json::from_str(&json).unwrap();
-    assert_same_values(&read, &compensated);
+    assert_eq!(read, compensated);
 
     let white = Microfacet::new(
         Beckmann::isotropic(alpha(0.7)),
@@ -108,7 +108,7 @@ fn compensated_glass_and_plastic_are_their_uncompensated_parameters() {
         r#"{ "distribution": { "alpha": 0.3 }, "eta": 1.5, "mode": "importance" }"#,
     )
     .unwrap();
-    assert_same_values(&read, &glass);
+    assert_eq!(read, glass);
     assert_refused::<CompensatedDielectric<Ggx>>(
         r#"{"distribution":{"alpha":0.3},"eta":4.0}"#,
         "invalid eta (compensated) = 4",
@@ -127,7 +127,7 @@ fn compensated_glass_and_plastic_are_their_uncompensated_parameters() {
         r#"{"reflectance":[0.8,0.5,0.25],"distribution":{"alpha":0.2},"eta":1.5}"#,
     )
     .unwrap();
-    assert_same_values(&read, &rgb);
+    assert_eq!(read, rgb);
 }
 
 #[test]
@@ -153,7 +153,7 @@ fn diffuse_transmission_and_sheen_are_their_constructors_parameters() {
     round_trip(&Sheen::new(Vec4::splat(0.7), 0.03).unwrap());
     let read: Sheen<Vec3> =
         serde_json::from_str(r#"{ "color": [0.9, 0.2, 0.3], "roughness": 0.5 }"#).unwrap();
-    assert_same_values(&read, &velvet);
+    assert_eq!(read, velvet);
     assert_refused::<Sheen>(
         r#"{"color":0.5,"roughness":0.001}"#,
         "invalid roughness = 0.001: expected a value in [0.01, 1]",
@@ -179,7 +179,7 @@ fn mix_and_two_sided_are_the_models_they_combine() {
              "weight": 0.25 }"#,
     )
     .unwrap();
-    assert_same_values(&read, &mix);
+    assert_eq!(read, mix);
     assert_refused::<Mix<Lambert, Lambert>>(
         r#"{"first":{"reflectance":0.5},"second":{"reflectance":0.5},"weight":1.5}"#,
         "invalid weight = 1.5: expected a value in [0, 1]",
@@ -193,7 +193,7 @@ fn mix_and_two_sided_are_the_models_they_combine() {
     let paper = TwoSided::new(Lambert::new(0.7_f32).unwrap());
     assert_wire(&paper, r#"{"inner":{"reflectance":0.7}}"#);
     let read: TwoSided<Lambert> = serde_json::from_str(r#"{"inner":{"reflectance":0.7}}"#).unwrap();
-    assert_same_values(&read, &paper);
+    assert_eq!(read, paper);
 }
 
 #[test]
@@ -203,7 +203,7 @@ fn layered_models_are_their_layers_and_the_options_that_differ_from_the_defaults
     let json = r#"{"top":{"distribution":{"alpha":0.1},"eta":1.5},"bottom":{"reflectance":[0.7,0.3,0.1]}}"#;
     assert_wire(&coated, json);
     let read: CoatedDiffuse<Ggx, Vec3> = serde_json::from_str(json).unwrap();
-    assert_same_values(&read, &coated);
+    assert_eq!(read, coated);
 
     let full = coated
         .with_thickness(0.1)
@@ -214,7 +214,7 @@ fn layered_models_are_their_layers_and_the_options_that_differ_from_the_defaults
     let json = r#"{"top":{"distribution":{"alpha":0.1},"eta":1.5},"bottom":{"reflectance":[0.7,0.3,0.1]},"thickness":0.1,"medium":{"albedo":[0.5,0.5,0.5],"g":0.3},"max_depth":32,"samples":4}"#;
     assert_wire(&full, json);
     let read: CoatedDiffuse<Ggx, Vec3> = serde_json::from_str(json).unwrap();
-    assert_same_values(&read, &full);
+    assert_eq!(read, full);
     // An isotropic medium leaves out its g.
     let isotropic = coated.with_medium(Vec3::splat(0.5), 0.0).unwrap();
     assert!(round_trip(&isotropic).ends_with(r#""medium":{"albedo":[0.5,0.5,0.5]}}"#));
@@ -224,7 +224,7 @@ fn layered_models_are_their_layers_and_the_options_that_differ_from_the_defaults
             .unwrap();
     let json = round_trip(&copper);
     let read: CoatedConductor<Ggx, Ggx, Vec3> = serde_json::from_str(&json).unwrap();
-    assert_same_values(&read, &copper);
+    assert_eq!(read, copper);
 
     let glass_over_lambert =
         r#"{"top":{"distribution":{"alpha":0.1},"eta":1.5},"bottom":{"reflectance":0.5}"#;
@@ -282,7 +282,7 @@ fn every_top_interface_and_medium_goes_out_and_comes_back() {
         r#"{"top":{"distribution":{"alpha":0.4},"eta":1.33},"bottom":{"reflectance":[0.6,0.5,0.4]}}"#,
     )
     .unwrap();
-    assert_same_values(&read, &compensated);
+    assert_eq!(read, compensated);
     let smooth = Layered::new(SmoothDielectric::new(eta(1.5)), base)
         .with_samples(2)
         .unwrap();

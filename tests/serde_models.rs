@@ -5,7 +5,7 @@
 
 mod common;
 
-use common::wire::{assert_refused, assert_same_values, assert_wire, round_trip};
+use common::wire::{assert_refused, assert_wire, round_trip};
 use lobe::bxdf::{
     BlinnPhong, BlinnPhongForm, DisneyDiffuse, EnergyPreservingOrenNayar, Glazed, Lambert,
     Microfacet, Mirror, Mono, OrenNayar, Phong, Plastic, RoughConductor, RoughDielectric,
@@ -162,41 +162,42 @@ fn phong_models_are_kd_ks_and_exponent() {
     );
 }
 
-#[test]
-fn phong_refusals_name_the_field() {
-    for model in ["Phong", "BlinnPhong"] {
-        let refused = |json: &str, message: &str| {
-            if model == "Phong" {
-                assert_refused::<Phong<Vec3>>(json, message);
-            } else {
-                assert_refused::<BlinnPhong<Vec3>>(json, message);
-            }
-        };
-        refused(
+/// The refusals Phong and Blinn-Phong share: their weights, their sum and the exponent.
+fn phong_family_refusals<M: serde::de::DeserializeOwned + std::fmt::Debug>() {
+    for (json, message) in [
+        (
             r#"{ "kd": [0.5, 0.5, 1.2], "ks": [0, 0, 0], "exponent": 10 }"#,
             "invalid kd = 1.2: expected a value in [0, 1]",
-        );
-        refused(
+        ),
+        (
             r#"{ "kd": [0.5, 0.5, 0.5], "ks": [0, -1, 0], "exponent": 10 }"#,
             "invalid ks = -1: expected a value in [0, 1]",
-        );
-        refused(
+        ),
+        (
             r#"{ "kd": [0.5, 0.5, 0.5], "ks": [0.25, 0.75, 0.25], "exponent": 10 }"#,
             "invalid kd + ks = 1.25: expected a value in [0, 1]",
-        );
-        refused(
+        ),
+        (
             r#"{ "kd": [0.5, 0.5, 0.5], "ks": [0.25, 0.25, 0.25], "exponent": -3 }"#,
             "invalid exponent = -3: expected a value in [0, 1000000]",
-        );
-        refused(
+        ),
+        (
             r#"{ "kd": [0.5, 0.5, 0.5], "ks": [0.25, 0.25, 0.25], "exponent": 1e7 }"#,
             "invalid exponent = 10000000: expected a value in [0, 1000000]",
-        );
-        refused(
+        ),
+        (
             r#"{ "kd": [0.5, 0.5, 0.5], "ks": [0.25, 0.25, 0.25] }"#,
             "missing field `exponent`",
-        );
+        ),
+    ] {
+        assert_refused::<M>(json, message);
     }
+}
+
+#[test]
+fn phong_refusals_name_the_field() {
+    phong_family_refusals::<Phong<Vec3>>();
+    phong_family_refusals::<BlinnPhong<Vec3>>();
     assert_refused::<BlinnPhong>(
         r#"{ "kd": 0.5, "ks": 0.25, "exponent": 8, "form": "phong" }"#,
         "unknown variant `phong`, expected `modified` or `normalized`",
@@ -307,17 +308,12 @@ fn microfacet_refusals_name_the_field() {
 
 #[test]
 fn delta_models_are_their_index_or_fresnel_term() {
-    assert_wire(
-        &Mirror::new(Conductor {
-            ior: metals::SILVER.rgb(),
-        }),
-        &format!(
-            r#"{{"fresnel":{}}}"#,
-            serde_json::to_string(&Conductor {
-                ior: metals::SILVER.rgb()
-            })
-            .unwrap()
-        ),
+    let silver = round_trip(&Mirror::new(Conductor {
+        ior: metals::SILVER.rgb(),
+    }));
+    assert!(
+        silver.starts_with(r#"{"fresnel":{"ior":{"eta":["#) && silver.ends_with("]}}}"),
+        "{silver}"
     );
     assert_wire(
         &Mirror::new(Schlick::new(Vec3::new(0.9, 0.8, 0.5)).unwrap()),
@@ -415,7 +411,6 @@ fn models_read_from_a_file_are_the_models_built_in_code() {
     )
     .unwrap();
     assert_eq!(read, built);
-    assert_same_values(&read, &built);
 
     let read: RoughDielectric<Beckmann> = serde_json::from_str(
         r#"{ "distribution": { "alpha_x": 0.2, "alpha_y": 0.4 }, "eta": 1.45, "mode": "importance" }"#,
@@ -424,7 +419,6 @@ fn models_read_from_a_file_are_the_models_built_in_code() {
     let built = RoughDielectric::new(Beckmann::new(alpha(0.2), alpha(0.4)), eta(1.45))
         .with_mode(TransportMode::Importance);
     assert_eq!(read, built);
-    assert_same_values(&read, &built);
 
     let read: EnergyPreservingOrenNayar<Vec3> = serde_json::from_str(
         r#"{ "reflectance": [0.9, 0.6, 0.3], "roughness": 0.8, "exact_albedo": true }"#,
@@ -434,5 +428,4 @@ fn models_read_from_a_file_are_the_models_built_in_code() {
         .unwrap()
         .with_exact_albedo();
     assert_eq!(read, built);
-    assert_same_values(&read, &built);
 }

@@ -1,23 +1,12 @@
 //! Serde for the parameter types (feature `serde`): what goes out comes back, and what comes
 //! in is validated exactly as the constructors validate.
 
+mod common;
+
+use common::wire::assert_refused;
 use lobe::metals::{self, Metal};
 use lobe::{Alpha, ComplexIor, Eta, Ior, Roughness, Vec3, Vec4};
 use serde::Deserialize;
-
-/// The message of a refused value: ParamError's, followed by serde_json's position.
-fn refusal<T: for<'de> Deserialize<'de>>(json: &str) -> String {
-    match serde_json::from_str::<T>(json) {
-        Ok(_) => panic!("{json} was accepted"),
-        Err(e) => e.to_string(),
-    }
-}
-
-/// Asserts that `json` is refused with a message that starts with `message`.
-fn assert_refused<T: for<'de> Deserialize<'de>>(json: &str, message: &str) {
-    let e = refusal::<T>(json);
-    assert!(e.starts_with(message), "{e}");
-}
 
 #[test]
 fn scalars_are_plain_numbers_both_ways() {
@@ -105,10 +94,11 @@ fn complex_indices_are_validated_on_the_way_in() {
         "invalid k = 10000: expected a value in [0, 1000]",
     );
     // Structural mistakes: a missing part, an unknown field, the wrong number of channels.
-    let e = refusal::<ComplexIor<Vec3>>(r#"{ "eta": [0.2, 0.9, 1.1] }"#);
-    assert!(e.contains("missing field `k`"), "{e}");
-    let e = refusal::<ComplexIor>(r#"{ "eta": 0.2, "k": 3.0, "kappa": 3.0 }"#);
-    assert!(e.contains("unknown field `kappa`"), "{e}");
+    assert_refused::<ComplexIor<Vec3>>(r#"{ "eta": [0.2, 0.9, 1.1] }"#, "missing field `k`");
+    assert_refused::<ComplexIor>(
+        r#"{ "eta": 0.2, "k": 3.0, "kappa": 3.0 }"#,
+        "unknown field `kappa`",
+    );
     assert!(serde_json::from_str::<ComplexIor<Vec3>>(r#"{ "eta": 0.2, "k": 3.0 }"#).is_err());
     assert!(
         serde_json::from_str::<ComplexIor<Vec3>>(r#"{ "eta": [0.2, 0.9], "k": [3, 2] }"#).is_err()

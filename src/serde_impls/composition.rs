@@ -3,7 +3,7 @@
 //! parameters. A layered model's adjoint top interface and its phase function are derived
 //! again on the way in.
 
-use super::refused;
+use super::{is_default, refused};
 use crate::bxdf::layered::{DEFAULT_MAX_DEPTH, DEFAULT_THICKNESS};
 use crate::bxdf::{Bxdf, LayerInterface, Layered, Mix, Prepare, TwoSided};
 use crate::spectrum::Spectrum;
@@ -33,7 +33,7 @@ wire! {
 #[serde(rename = "Medium", deny_unknown_fields)]
 struct MediumRepr<S> {
     albedo: S,
-    #[serde(default, skip_serializing_if = "is_zero")]
+    #[serde(default, skip_serializing_if = "is_default")]
     g: f32,
 }
 
@@ -50,6 +50,7 @@ struct LayeredRepr<T, B, S> {
         skip_serializing_if = "is_default_thickness"
     )]
     thickness: f32,
+    // A path rather than plain `default`, which would make the derive ask for `S: Default`.
     #[serde(default = "Option::default", skip_serializing_if = "Option::is_none")]
     medium: Option<MediumRepr<S>>,
     #[serde(
@@ -83,10 +84,6 @@ fn one() -> u32 {
 
 fn is_one(n: &u32) -> bool {
     *n == 1
-}
-
-fn is_zero(g: &f32) -> bool {
-    *g == 0.0
 }
 
 impl<T, B> Serialize for Layered<T, B>
