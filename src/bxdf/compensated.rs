@@ -1,7 +1,7 @@
 //! Energy compensation of the microfacet reflection model: Kulla & Conty's multiple-scattering
 //! lobe, or Turquin's scaling.
 
-use super::{At, BxdfSample, Lobes, Microfacet, Prepare, both_above};
+use super::{At, BxdfSample, Lobes, Microfacet, Prepare, both_above, usable_pdf};
 use crate::fresnel::{Fresnel, FresnelAverage};
 use crate::microfacet::{NormalDistribution, View};
 use crate::param::ParamError;
@@ -320,7 +320,7 @@ impl<D: NormalDistribution, F: FresnelAverage> Prepare for CompensatedMicrofacet
             return None;
         }
         let pdf = (1.0 - p) * pdf + p * cosine_hemisphere_pdf(wi.z);
-        if !(pdf > 0.0 && pdf.is_finite()) {
+        if !usable_pdf(pdf) {
             return None;
         }
         Some(BxdfSample::new(

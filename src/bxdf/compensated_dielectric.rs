@@ -1,7 +1,7 @@
 //! Kulla & Conty's energy compensation of the rough dielectric interface.
 
 use super::compensated::CompensatedState;
-use super::{At, BxdfSample, Lobes, Prepare, RoughDielectric, TransportMode};
+use super::{At, BxdfSample, Lobes, Prepare, RoughDielectric, TransportMode, usable_pdf};
 use crate::fresnel::{Dielectric, FresnelAverage};
 use crate::microfacet::{NormalDistribution, View};
 use crate::param::ParamError;
@@ -327,7 +327,7 @@ impl<D: NormalDistribution> Prepare for CompensatedDielectric<D> {
         };
         let (f_ms, pdf_ms) = self.lobes_at(wo, at.outgoing, p, wi);
         let pdf = (1.0 - p) * pdf + pdf_ms;
-        if !(pdf > 0.0 && pdf.is_finite()) {
+        if !usable_pdf(pdf) {
             return None;
         }
         Some(BxdfSample {

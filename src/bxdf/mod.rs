@@ -126,17 +126,17 @@ macro_rules! diffuse_glossy_model {
                 wo
             }
 
-            #[inline]
+            #[inline(always)]
             fn eval_prepared(&self, &wo: &glam::Vec3, wi: glam::Vec3) -> S {
                 self.eval_pdf_prepared(&wo, wi).0
             }
 
-            #[inline]
+            #[inline(always)]
             fn pdf_prepared(&self, &wo: &glam::Vec3, wi: glam::Vec3) -> f32 {
                 self.eval_pdf_prepared(&wo, wi).1
             }
 
-            #[inline]
+            #[inline(always)]
             fn eval_pdf_prepared(&self, &wo: &glam::Vec3, wi: glam::Vec3) -> (S, f32) {
                 if $crate::bxdf::both_above(wo, wi) {
                     // One evaluation of the lobe serves both.

@@ -252,17 +252,21 @@ fn rms((ax, ay): (f32, f32)) -> f32 {
     }
 }
 
-/// Where `eta ≥ 1` falls on the `η` nodes.
-fn locate_eta(eta: f32) -> Result<(usize, f32), ParamError> {
+/// Where `eta` falls on the `η` nodes; `None` outside `[ETA_MIN, ETA_MAX]` (each caller
+/// names the range it accepts).
+fn locate_eta(eta: f32) -> Option<(usize, f32)> {
     if !(ETA_MIN..=ETA_MAX).contains(&eta) {
-        return Err(ParamError::new(
-            "eta (compensated)",
-            eta,
-            "[0.3333, 0.9901] ∪ [1.01, 3]",
-        ));
+        return None;
     }
     let (lo, hi) = (eta_coordinate(ETA_MIN), eta_coordinate(ETA_MAX));
-    Ok(locate((eta_coordinate(eta) - lo) / (hi - lo), ETA_NODES))
+    Some(locate((eta_coordinate(eta) - lo) / (hi - lo), ETA_NODES))
+}
+
+/// Where a coat's `eta` (light enters the coat from outside: `η ≥ 1`) falls on the `η`
+/// nodes.
+fn coat_eta(eta: Eta) -> Result<(usize, f32), ParamError> {
+    locate_eta(eta.get())
+        .ok_or_else(|| ParamError::new("eta (compensated)", eta.get(), "[1.01, 3]"))
 }
 
 /// [`TabulatedAlbedo::dielectric_albedo`] from a pair of tables.
@@ -274,7 +278,7 @@ fn dielectric_rows(
     let alpha = check_alpha(alpha)?;
     let n = eta.get();
     let (flip, n) = if n < 1.0 { (true, 1.0 / n) } else { (false, n) };
-    let at = locate_eta(n).map_err(|_| {
+    let at = locate_eta(n).ok_or_else(|| {
         ParamError::new(
             "eta (compensated)",
             eta.get(),
@@ -320,7 +324,7 @@ impl TabulatedDielectric for Ggx {
 
     fn coat_albedo(&self, eta: Eta) -> Result<AlbedoRow, ParamError> {
         let alpha = check_alpha(self.tabulated_alpha())?;
-        AlbedoRow::from_dielectric(&GGX_DIELECTRIC_REFLECTION, alpha, locate_eta(eta.get())?)
+        AlbedoRow::from_dielectric(&GGX_DIELECTRIC_REFLECTION, alpha, coat_eta(eta)?)
     }
 }
 
