@@ -28,8 +28,9 @@ use std::time::Duration;
 const N: usize = 1024;
 
 /// Fixed viewer and light directions (above the surface, or anywhere for a transmissive
-/// model), and random numbers.
-fn inputs(sphere: bool) -> (Vec<Vec3>, Vec<Vec3>, Vec<Vec2>) {
+/// model), and random numbers: `u` for the direction, `uc` for the choice of lobe (uniform,
+/// so that the compensation lobe is sampled as often as it is in a renderer).
+fn inputs(sphere: bool) -> (Vec<Vec3>, Vec<Vec3>, Vec<Vec2>, Vec<f32>) {
     let mut rng = Pcg32::new(42, 0);
     let dir = |rng: &mut Pcg32| {
         if sphere {
@@ -41,7 +42,8 @@ fn inputs(sphere: bool) -> (Vec<Vec3>, Vec<Vec3>, Vec<Vec2>) {
     let wo = (0..N).map(|_| dir(&mut rng)).collect();
     let wi = (0..N).map(|_| dir(&mut rng)).collect();
     let u = (0..N).map(|_| rng.next_vec2()).collect();
-    (wo, wi, u)
+    let uc = (0..N).map(|_| rng.next_f32()).collect();
+    (wo, wi, u, uc)
 }
 
 /// One pass of `eval` over the inputs.
@@ -53,7 +55,7 @@ fn eval_pass<B: Bxdf>(bxdf: &B, wo: &[Vec3], wi: &[Vec3]) {
 
 /// `eval`, `pdf` and `sample` of `base` and `compensated`, in the order A B A B.
 fn pair<A: Bxdf, B: Bxdf>(c: &mut Criterion, name: &str, base: &A, compensated: &B) {
-    let (wo, wi, u) = inputs(base.lobes().is_transmissive());
+    let (wo, wi, u, uc) = inputs(base.lobes().is_transmissive());
     for round in ["", " (again)"] {
         c.bench_function(&format!("{name}/eval{round}"), |b| {
             b.iter(|| eval_pass(base, &wo, &wi))
@@ -79,14 +81,14 @@ fn pair<A: Bxdf, B: Bxdf>(c: &mut Criterion, name: &str, base: &A, compensated: 
     c.bench_function(&format!("{name}/sample"), |b| {
         b.iter(|| {
             for k in 0..N {
-                black_box(base.sample(black_box(wo[k]), black_box(u[k]), 0.5));
+                black_box(base.sample(black_box(wo[k]), black_box(u[k]), black_box(uc[k])));
             }
         })
     });
     c.bench_function(&format!("{name} compensated/sample"), |b| {
         b.iter(|| {
             for k in 0..N {
-                black_box(compensated.sample(black_box(wo[k]), black_box(u[k]), 0.5));
+                black_box(compensated.sample(black_box(wo[k]), black_box(u[k]), black_box(uc[k])));
             }
         })
     });
@@ -143,7 +145,7 @@ fn compensation(c: &mut Criterion) {
 
     // The bar's pair, in alternation.
     let compensated = ggx_gold.with_energy_compensation().unwrap();
-    let (wo, wi, _) = inputs(false);
+    let (wo, wi, _, _) = inputs(false);
     let mut kernels = vec![
         interleave::Kernel::new("GGX gold RGB/eval", N, || eval_pass(&ggx_gold, &wo, &wi)),
         interleave::Kernel::new("GGX gold RGB compensated/eval", N, || {
