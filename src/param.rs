@@ -308,6 +308,26 @@ impl Eta {
         Self(1.0 / self.0)
     }
 
+    /// The relative index a transmission leaving from the side of a direction with
+    /// `cos θ = cos_theta` sees: `η` from the outside (`cos_theta > 0`), `1/η` from the inside.
+    ///
+    /// ```
+    /// use lobe::Eta;
+    /// let glass = Eta::new(1.5)?;
+    /// assert_eq!(glass.seen_from(0.3), 1.5);
+    /// assert_eq!(glass.seen_from(-0.3), 1.0 / 1.5);
+    /// # Ok::<(), lobe::ParamError>(())
+    /// ```
+    #[inline(always)]
+    #[must_use]
+    pub fn seen_from(self, cos_theta: f32) -> f32 {
+        if cos_theta > 0.0 {
+            self.0
+        } else {
+            1.0 / self.0
+        }
+    }
+
     /// The normal-incidence Fresnel reflectance `F0 = ((η − 1)/(η + 1))²`.
     #[inline]
     #[must_use]

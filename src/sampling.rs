@@ -39,6 +39,18 @@ use glam::{Vec2, Vec3};
 const INV_2PI: f32 = 0.5 * FRAC_1_PI;
 /// `1 / (4π)`, the density of the uniform sphere.
 const INV_4PI: f32 = 0.25 * FRAC_1_PI;
+/// The largest `f32` below 1, where a number meant to be uniform in `[0, 1)` is clamped.
+pub(crate) const ONE_MINUS_EPSILON: f32 = 1.0 - f32::EPSILON / 2.0;
+
+/// `u ∈ [lo, lo + width)` carried back onto `[0, 1)`: once `u` has chosen the branch that
+/// owns that interval, what is left of it is a fresh uniform number for the branch's own
+/// sampler (the reuse of a lobe-selection sample, as in pbrt-v4's `LayeredBxDF`). Clamped to
+/// `[0, 1)` against rounding (and a NaN to `0`).
+#[inline(always)]
+#[allow(clippy::manual_clamp)] // `clamp` would pass a NaN through; `max` turns it into 0.
+pub(crate) fn reuse_uniform(u: f32, lo: f32, width: f32) -> f32 {
+    ((u - lo) / width).max(0.0).min(ONE_MINUS_EPSILON)
+}
 
 /// The angle `atan2(y, x)` moved into `[0, 2π)`, as a fraction of a full turn in `[0, 1]`.
 #[inline(always)]

@@ -382,3 +382,56 @@ fn the_combinators_and_layered_models_equal_the_scalar_path() {
     );
     check("Sheen", &Sheen::new(rgb, 0.4).unwrap());
 }
+
+/// The energy-compensated models (`lobe::batch`'s default loops over their `Prepare` code):
+/// Kulla & Conty's lobe on a conductor and on a white microfacet, Turquin's scaling, the
+/// compensated glass in both transport modes and the compensated plastic.
+#[test]
+fn the_compensated_models_equal_the_scalar_path() {
+    use lobe::bxdf::{CompensatedMicrofacet, Compensation};
+    use lobe::fresnel::NoFresnel;
+    let hc = Masking::HeightCorrelated;
+    let glass = Eta::new(1.5).unwrap();
+    let gold = ComplexIor::new(
+        Vec3::new(0.143, 0.375, 1.442),
+        Vec3::new(3.983, 2.386, 1.603),
+    )
+    .unwrap();
+    check(
+        "GGX gold compensated",
+        &Microfacet::new(Ggx::isotropic(a(0.6)), hc, Conductor { ior: gold })
+            .with_energy_compensation()
+            .unwrap(),
+    );
+    check(
+        "GGX white compensated",
+        &Microfacet::new(Ggx::isotropic(a(0.6)), hc, NoFresnel::<f32>::new())
+            .with_energy_compensation()
+            .unwrap(),
+    );
+    check(
+        "GGX Turquin",
+        &CompensatedMicrofacet::new(
+            Microfacet::new(
+                Ggx::isotropic(a(0.6)),
+                hc,
+                Schlick::new(Vec3::splat(0.5)).unwrap(),
+            ),
+            Compensation::Turquin,
+        )
+        .unwrap(),
+    );
+    for mode in [TransportMode::Radiance, TransportMode::Importance] {
+        check(
+            &format!("rough glass compensated, {mode:?}"),
+            &RoughDielectric::new(Ggx::isotropic(a(0.4)), glass)
+                .with_mode(mode)
+                .with_energy_compensation()
+                .unwrap(),
+        );
+    }
+    check(
+        "plastic compensated",
+        &Plastic::compensated(Vec3::new(0.8, 0.5, 0.2), Ggx::isotropic(a(0.4)), glass).unwrap(),
+    );
+}

@@ -128,14 +128,7 @@ fn the_white_furnace() {
         ..Config::default()
     };
     for e in [0.7_f32, 1.1, 1.5, 2.5] {
-        let stack = Layered::new(
-            SmoothDielectric::new(eta(e)),
-            Lambert::new(1.0_f32).unwrap(),
-        )
-        .with_thickness(0.0)
-        .unwrap()
-        .with_max_depth(2048)
-        .unwrap();
+        let stack = white_stack(SmoothDielectric::new(eta(e)));
         for theta in [0.0, 45.0, 80.0] {
             let a = albedo_sampled(&stack, common::dir(theta, 0.2), &budget);
             eprintln!("smooth η={e} θo={theta}°: {a}");
@@ -169,7 +162,7 @@ fn the_white_furnace() {
 fn white_stack<T: LayerInterface>(top: T) -> Layered<T, Lambert> {
     Layered::new(top, Lambert::new(1.0_f32).unwrap())
         .with_thickness(0.0)
-        .and_then(|m| m.with_max_depth(1024))
+        .and_then(|m| m.with_max_depth(2048))
         .unwrap()
 }
 

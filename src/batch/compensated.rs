@@ -1,11 +1,10 @@
 //! [`Batch`] for the energy-compensated models: the default loops over their [`Prepare`]
-//! code.
+//! code (the compensated plastic shares [`Plastic`](crate::bxdf::Plastic)'s, in `models.rs`).
 
 use super::{Batch, Lanes};
-use crate::bxdf::{CompensatedDielectric, CompensatedMicrofacet, Plastic};
-use crate::fresnel::{Dielectric, FresnelAverage};
+use crate::bxdf::{CompensatedDielectric, CompensatedMicrofacet};
+use crate::fresnel::FresnelAverage;
 use crate::microfacet::NormalDistribution;
-use crate::spectrum::Spectrum;
 
 impl<D: NormalDistribution, F: FresnelAverage> Batch for CompensatedMicrofacet<D, F> where
     F::Spectrum: Lanes
@@ -13,8 +12,3 @@ impl<D: NormalDistribution, F: FresnelAverage> Batch for CompensatedMicrofacet<D
 }
 
 impl<D: NormalDistribution> Batch for CompensatedDielectric<D> {}
-
-impl<D: NormalDistribution, S: Spectrum + Lanes> Batch
-    for Plastic<D, S, CompensatedMicrofacet<D, Dielectric>>
-{
-}

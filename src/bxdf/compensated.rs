@@ -5,14 +5,11 @@ use super::{At, BxdfSample, Lobes, Microfacet, Prepare, both_above, usable_pdf};
 use crate::fresnel::{Fresnel, FresnelAverage};
 use crate::microfacet::{NormalDistribution, View};
 use crate::param::ParamError;
-use crate::sampling::{cosine_hemisphere, cosine_hemisphere_pdf};
+use crate::sampling::{cosine_hemisphere, cosine_hemisphere_pdf, reuse_uniform};
 use crate::spectrum::Spectrum;
 use crate::tables::{AlbedoRow, TabulatedAlbedo};
 use core::f32::consts::FRAC_1_PI;
 use glam::{Vec2, Vec3};
-
-/// The largest `f32` below 1: a remapped lobe-choice number stays in `[0, 1)`.
-const ONE_MINUS_EPSILON: f32 = 1.0 - f32::EPSILON / 2.0;
 
 /// How [`CompensatedMicrofacet`] puts back the energy of multiple scattering.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -110,14 +107,14 @@ pub struct CompensatedMicrofacet<D, F: Fresnel> {
 
 /// What a compensated model keeps about `wo` ([`Prepare::prepare`]): the inner model's
 /// prepared state, the compensation's factor at `wo` (Kulla & Conty:
-/// `F_ms (1 − E(μo)) / (π (1 − E_avg))`; Turquin: `1 + F0 (1/E(μo) − 1)`) and the share
-/// `1 − E(μo)` of the light the single-scattering lobe loses (`0` for Turquin's scaling),
-/// from which `pdf` and `sample` weigh the compensation lobe (`eval` needs no more).
+/// `F_ms (1 − E(μo)) / (π (1 − E_avg))`; Turquin: `1 + F0 (1/E(μo) − 1)`) and the
+/// probability with which `sample` draws the compensation lobe (`0` for Turquin's scaling),
+/// which also weighs the lobes' densities in `pdf` (`eval` needs no more).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct CompensatedState<P, S> {
     pub(crate) inner: P,
     pub(crate) outgoing: S,
-    pub(crate) share: f32,
+    pub(crate) probability: f32,
 }
 
 impl<D: TabulatedAlbedo, F: FresnelAverage> CompensatedMicrofacet<D, F> {
@@ -248,7 +245,7 @@ impl<D: NormalDistribution, F: FresnelAverage> Prepare for CompensatedMicrofacet
         CompensatedState {
             inner,
             outgoing,
-            share,
+            probability: self.probability(share),
         }
     }
 
@@ -267,7 +264,7 @@ impl<D: NormalDistribution, F: FresnelAverage> Prepare for CompensatedMicrofacet
     #[inline(always)]
     fn pdf_prepared(&self, at: &Self::Prepared, wi: Vec3) -> f32 {
         let pdf = self.inner.pdf_prepared(&at.inner, wi);
-        let p = self.probability(at.share);
+        let p = at.probability;
         if p > 0.0 && both_above(at.inner.wo, wi) {
             (1.0 - p) * pdf + p * cosine_hemisphere_pdf(wi.z)
         } else {
@@ -278,7 +275,7 @@ impl<D: NormalDistribution, F: FresnelAverage> Prepare for CompensatedMicrofacet
     #[inline(always)]
     fn eval_pdf_prepared(&self, at: &Self::Prepared, wi: Vec3) -> (F::Spectrum, f32) {
         let (f, pdf) = self.inner.eval_pdf_prepared(&at.inner, wi);
-        let p = self.probability(at.share);
+        let p = at.probability;
         match self.compensation {
             Compensation::KullaConty if both_above(at.inner.wo, wi) => (
                 f + self.lobe(at.outgoing, wi),
@@ -304,7 +301,7 @@ impl<D: NormalDistribution, F: FresnelAverage> Prepare for CompensatedMicrofacet
         if !(at.inner.wo.z > 0.0) {
             return None;
         }
-        let p = self.probability(at.share);
+        let p = at.probability;
         // The single-scattering lobe's value and density at wi: from its own sample when it
         // drew wi (the numbers its eval and pdf give), else evaluated together.
         let (wi, f, pdf, lobe) = if uc < p {
@@ -312,7 +309,7 @@ impl<D: NormalDistribution, F: FresnelAverage> Prepare for CompensatedMicrofacet
             let (f, pdf) = self.inner.eval_pdf_prepared(&at.inner, wi);
             (wi, f, pdf, Lobes::DIFFUSE_REFLECTION)
         } else {
-            let uc = ((uc - p) / (1.0 - p)).min(ONE_MINUS_EPSILON);
+            let uc = reuse_uniform(uc, p, 1.0 - p);
             let s = self.inner.sample_prepared(&at.inner, u, uc)?;
             (s.wi, s.f, s.pdf, s.lobe)
         };

@@ -5,13 +5,10 @@ use super::{At, BxdfSample, Lobes, Prepare, RoughDielectric, TransportMode, usab
 use crate::fresnel::{Dielectric, FresnelAverage};
 use crate::microfacet::{NormalDistribution, View};
 use crate::param::ParamError;
-use crate::sampling::cosine_hemisphere;
+use crate::sampling::{cosine_hemisphere, reuse_uniform};
 use crate::tables::{AlbedoRow, DielectricAlbedo, TabulatedDielectric};
 use core::f32::consts::PI;
 use glam::{Vec2, Vec3};
-
-/// The largest `f32` below 1: a remapped lobe-choice number stays in `[0, 1)`.
-const ONE_MINUS_EPSILON: f32 = 1.0 - f32::EPSILON / 2.0;
 
 /// The compensation lobes for `wo` on one side of the interface: `f_ms = (1 − E(μo)) ·
 /// c · (1 − E'(μi))` with `c` and `E'` those of reflection (`wi` on the same side) or of
@@ -270,27 +267,32 @@ impl<D: NormalDistribution> Prepare for CompensatedDielectric<D> {
         CompensatedState {
             inner,
             outgoing,
-            share: outgoing,
+            probability: outgoing,
         }
     }
 
     #[inline(always)]
     fn eval_prepared(&self, at: &Self::Prepared, wi: Vec3) -> f32 {
         let f = self.inner.eval_prepared(&at.inner, wi);
-        f + self.lobes_at(at.inner.wo, at.outgoing, at.share, wi).0
+        f + self
+            .lobes_at(at.inner.wo, at.outgoing, at.probability, wi)
+            .0
     }
 
     #[inline(always)]
     fn pdf_prepared(&self, at: &Self::Prepared, wi: Vec3) -> f32 {
         let pdf = self.inner.pdf_prepared(&at.inner, wi);
-        (1.0 - at.share) * pdf + self.lobes_at(at.inner.wo, at.outgoing, at.share, wi).1
+        (1.0 - at.probability) * pdf
+            + self
+                .lobes_at(at.inner.wo, at.outgoing, at.probability, wi)
+                .1
     }
 
     #[inline(always)]
     fn eval_pdf_prepared(&self, at: &Self::Prepared, wi: Vec3) -> (f32, f32) {
         let (f, pdf) = self.inner.eval_pdf_prepared(&at.inner, wi);
-        let (f_ms, pdf_ms) = self.lobes_at(at.inner.wo, at.outgoing, at.share, wi);
-        (f + f_ms, (1.0 - at.share) * pdf + pdf_ms)
+        let (f_ms, pdf_ms) = self.lobes_at(at.inner.wo, at.outgoing, at.probability, wi);
+        (f + f_ms, (1.0 - at.probability) * pdf + pdf_ms)
     }
 
     #[inline(always)]
@@ -299,7 +301,7 @@ impl<D: NormalDistribution> Prepare for CompensatedDielectric<D> {
         if wo.z == 0.0 {
             return None;
         }
-        let p = at.share;
+        let p = at.probability;
         let (wi, f, pdf, lobe, eta) = if uc < p {
             let (side, _, _) = self.side(wo.z > 0.0);
             let transmit = uc < p * side.transmitted;
@@ -310,18 +312,16 @@ impl<D: NormalDistribution> Prepare for CompensatedDielectric<D> {
             }
             let (f, pdf) = self.inner.eval_pdf_prepared(&at.inner, wi);
             let (lobe, eta) = if transmit {
-                let etap = if wo.z > 0.0 {
-                    self.inner.eta().get()
-                } else {
-                    1.0 / self.inner.eta().get()
-                };
-                (Lobes::DIFFUSE | Lobes::TRANSMISSION, etap)
+                (
+                    Lobes::DIFFUSE | Lobes::TRANSMISSION,
+                    self.inner.eta().seen_from(wo.z),
+                )
             } else {
                 (Lobes::DIFFUSE_REFLECTION, 1.0)
             };
             (wi, f, pdf, lobe, eta)
         } else {
-            let uc = ((uc - p) / (1.0 - p)).min(ONE_MINUS_EPSILON);
+            let uc = reuse_uniform(uc, p, 1.0 - p);
             let s = self.inner.sample_prepared(&at.inner, u, uc)?;
             (s.wi, s.f, s.pdf, s.lobe, s.eta)
         };

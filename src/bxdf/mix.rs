@@ -2,11 +2,9 @@
 
 use super::{At, BxdfSample, Lobes, Prepare, usable_pdf};
 use crate::param::ParamError;
+use crate::sampling::reuse_uniform;
 use crate::spectrum::Spectrum;
 use glam::{Vec2, Vec3};
-
-/// The largest `f32` below 1: a remapped lobe-choice number stays in `[0, 1)`.
-const ONE_MINUS_EPSILON: f32 = 1.0 - f32::EPSILON / 2.0;
 
 /// The blend of two models `A` and `B` with weight `w ∈ [0, 1]`:
 ///
@@ -142,10 +140,10 @@ impl<A: Prepare, B: Prepare<Spectrum = A::Spectrum>> Prepare for Mix<A, B> {
         let wa = 1.0 - self.weight;
         let choose_a = uc < wa;
         let (s, p) = if choose_a {
-            let uc = (uc / wa).min(ONE_MINUS_EPSILON);
+            let uc = reuse_uniform(uc, 0.0, wa);
             (self.a.sample_prepared(&at.state.0, u, uc)?, wa)
         } else {
-            let uc = ((uc - wa) / self.weight).clamp(0.0, ONE_MINUS_EPSILON);
+            let uc = reuse_uniform(uc, wa, self.weight);
             (self.b.sample_prepared(&at.state.1, u, uc)?, self.weight)
         };
         if s.is_specular() {

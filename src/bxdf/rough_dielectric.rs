@@ -92,11 +92,7 @@ impl<D: NormalDistribution> RoughDielectric<D> {
     /// The relative index `η'` seen by a transmission from `wo`'s side.
     #[inline(always)]
     fn etap(&self, wo: Vec3) -> f32 {
-        if wo.z > 0.0 {
-            self.eta.get()
-        } else {
-            1.0 / self.eta.get()
-        }
+        self.eta.seen_from(wo.z)
     }
 
     /// The microfacet configuration that connects `wo` and `wi`, or `None` when no single

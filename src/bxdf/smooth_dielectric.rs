@@ -74,11 +74,7 @@ impl SmoothDielectric {
         if !(wi.z != 0.0 && t > 0.0) {
             return None;
         }
-        let etap = if wo.z > 0.0 {
-            self.eta.get()
-        } else {
-            1.0 / self.eta.get()
-        };
+        let etap = self.eta.seen_from(wo.z);
         let scale = match self.mode {
             TransportMode::Radiance => 1.0 / (etap * etap),
             TransportMode::Importance => 1.0,

@@ -1,5 +1,6 @@
 //! The small generator inside the stochastic models, seeded from a hash of their arguments.
 
+use crate::sampling::ONE_MINUS_EPSILON;
 use glam::{Vec2, Vec3};
 
 /// A PCG32 generator (O'Neill 2014, "PCG: A Family of Simple Fast Space-Efficient
@@ -18,8 +19,6 @@ pub(crate) struct WalkRng {
 const MULTIPLIER: u64 = 0x5851_f42d_4c95_7f2d;
 /// PCG32's increment (any odd number; this is the reference implementation's default).
 const INCREMENT: u64 = 0x1405_7b7e_f767_814f;
-/// The largest `f32` below 1.
-const ONE_MINUS_EPSILON: f32 = 1.0 - f32::EPSILON / 2.0;
 
 /// Stafford's variant 13 of the MurmurHash3 finaliser (as in SplitMix64): a bijection of
 /// `u64` in which every input bit affects every output bit.
