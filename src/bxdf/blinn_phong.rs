@@ -16,6 +16,8 @@ use glam::{Vec2, Vec3};
 /// Both are `k_s K(p) (n·h)^p` with `h` the half vector of `wo` and `wi`; they differ in the
 /// factor `K`.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum BlinnPhongForm {
     /// `K = 1`: the "modified Blinn-Phong" of the handout ([seed 003](crate::handouts#seed-003), with
     /// the geometry term of [ERRATA #7](crate::errata#erratum-7--blinn-phong-geometry-factor)).

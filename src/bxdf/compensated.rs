@@ -13,6 +13,8 @@ use glam::{Vec2, Vec3};
 
 /// How [`CompensatedMicrofacet`] puts back the energy of multiple scattering.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum Compensation {
     /// Kulla & Conty (2017): an added lobe, symmetric in `wo` and `wi`, so reciprocal. The
     /// default.

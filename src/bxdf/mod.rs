@@ -359,6 +359,8 @@ impl fmt::Display for Lobes {
 /// camera, a light path). Only refraction cares: radiance crossing an interface is scaled by
 /// `(η_i/η_t)²`, importance is not (Veach 1997, §5.2).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum TransportMode {
     /// Paths traced from the camera (the usual case).
     #[default]

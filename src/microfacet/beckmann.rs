@@ -12,6 +12,8 @@ const FRAC_1_SQRT_PI: f32 = 0.564_189_6;
 
 /// Which Smith masking function a [`Beckmann`] distribution uses.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum BeckmannMasking {
     /// The exact Smith `Λ(a) = (erf(a) − 1)/2 + e^(−a²)/(2a√π)`, `a = 1/(α tan θ)`
     /// (Walter et al. 2007, eq. 25 and the text after it).

@@ -8,6 +8,8 @@ use glam::Vec3;
 /// A closed set of choices rather than a type parameter: the choice is made once per
 /// material and the branch is perfectly predicted in a shading loop.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum Masking {
     /// Height-correlated Smith, `1 / (1 + Λ(wo) + Λ(wi))` (Heitz 2014, eq. 99): the default,
     /// and the most accurate of the three for a random height field.

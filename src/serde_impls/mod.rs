@@ -222,7 +222,6 @@ macro_rules! wire {
     };
 }
 
-mod choices;
 mod coated;
 mod compensated;
 mod composition;
