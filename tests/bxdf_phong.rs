@@ -162,8 +162,9 @@ fn large_exponents_keep_their_shape_near_the_mirror_direction() {
             let angle = angle_f64(f64s(Vec3::new(-wo.x, -wo.y, wo.z)), f64s(wi));
             let expect = norm * angle.cos().powf(f64::from(p));
             let got = f64::from(m.eval(wo, wi));
+            // A few f32 ulps of the value (measured at most 3.7e-7).
             assert!(
-                (got - expect).abs() <= 1e-4 * expect + 1e-30,
+                (got - expect).abs() <= 1e-6 * expect + 1e-30,
                 "p = {p}, α = {alpha}: {got} vs {expect}"
             );
         }

@@ -33,8 +33,8 @@ fn d_is_normalised() {
             let sin = (1.0 - mu * mu).sqrt();
             f64::from(s.d(Vec3::new(sin as f32, 0.0, mu as f32))) * mu
         });
-        eprintln!("r={r}: ∫ D cos θ = {integral:.6}");
-        assert!((integral - 1.0).abs() < 1e-4, "r={r}: {integral}");
+        eprintln!("r={r}: ∫ D cos θ = {integral:.9}");
+        assert!((integral - 1.0).abs() < 1e-6, "r={r}: {integral}");
     }
 }
 
@@ -69,8 +69,8 @@ fn the_fitted_lambda_nearly_satisfies_the_projected_area_identity() {
             worst = worst.max(rel.abs());
         }
     }
-    // The fit's error: a few per cent (measured: the largest is printed above).
-    assert!(worst < 0.1, "{worst}");
+    // The fit's error, the 5% `Sheen`'s docs quote (measured 4.76%).
+    assert!(worst < 0.05, "{worst}");
 }
 
 #[test]

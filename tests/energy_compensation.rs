@@ -741,7 +741,8 @@ fn interpolation_and_quadrature_errors_are_measured() {
         "conductor tables, largest anywhere sampled: {:.1e} ({})",
         worst_all.0, worst_all.1
     );
-    assert!(worst_bar.0 < 2e-3, "{worst_bar:?}");
+    // The README's figure (4.5e-4), rounded up.
+    assert!(worst_bar.0 < 5e-4, "{worst_bar:?}");
 
     // Dielectric: midpoints in √μ, √α and √(η − 1), both sides.
     let mut worst = (0.0_f32, String::new());
@@ -785,7 +786,8 @@ fn interpolation_and_quadrature_errors_are_measured() {
         "dielectric tables, largest interpolation error: {:.1e} ({})",
         worst.0, worst.1
     );
-    assert!(worst.0 < 5e-3, "{worst:?}");
+    // The README's figure (3.3e-3), rounded up.
+    assert!(worst.0 < 3.5e-3, "{worst:?}");
 
     // The integrator: tolerance 1e-6 against 1e-7, and against 2M Monte Carlo samples.
     let k = common::k_sigma(0.01, 4);
@@ -806,12 +808,14 @@ fn interpolation_and_quadrature_errors_are_measured() {
             },
         );
         eprintln!(
-            "quadrature α = {alpha}, μ = {mu}: {q6:.7} (tol 1e-6), {q7:.7} (1e-7), Monte Carlo {}",
+            "quadrature α = {alpha}, μ = {mu}: {q6:.7} (tol 1e-6), {q7:.7} (1e-7), apart {:.1e}, \
+             Monte Carlo {}",
+            (q6 - q7).abs(),
             show(&mc)
         );
-        // Measured: equal to the seven digits printed.
+        // The README's figure: the two tolerances agree to 1e-7.
         assert!(
-            (q6 - q7).abs() < 1e-6,
+            (q6 - q7).abs() < 1e-7,
             "tolerance 1e-6 gives {q6}, 1e-7 gives {q7}"
         );
         assert!(mc.within(q6, k), "{mc} vs {q6}");

@@ -162,7 +162,7 @@ fn unnormalised_d_fails_d_normalisation() {
     );
     let r = report.get(Law::DNormalization).unwrap();
     assert!(
-        (r.figure - f64::from(PI)).abs() < 10.0 * r.uncertainty,
+        (r.figure - f64::from(PI)).abs() <= common::k_sigma(0.01, RUNS) * r.uncertainty,
         "{r}"
     );
 }
@@ -794,7 +794,13 @@ fn energy_gaining_lobe_fails_the_energy_bound() {
         &[Law::EnergyBound],
     );
     let r = report.get(Law::EnergyBound).unwrap();
-    assert!((r.figure - 1.05).abs() < 1e-3, "{r}");
+    // Cosine sampling gives every sample the weight 1.05: the estimate is exact but for f32
+    // round-off (measured 1.0499999748 ± 3.5e-10), so the bar is k σ plus 1e-6 relative.
+    let k = common::k_sigma(0.01, RUNS);
+    assert!(
+        (r.figure - 1.05).abs() <= k * r.uncertainty + 1.05e-6,
+        "{r}"
+    );
 }
 
 /// **15. A sampler that returns `None` 21% of the time while its pdf integrates to 1**
@@ -843,10 +849,11 @@ fn transmission_without_eta_squared_fails_generalised_reciprocity() {
     );
     assert_caught(&report, &[Law::Reciprocity]);
     let r = report.get(Law::Reciprocity).unwrap();
-    assert!(
-        (r.figure - (1.0 - f64::from(eta).powi(-4))).abs() < 1e-3,
-        "{r}"
-    );
+    // Every refracted pair gives the ratio η⁴, so the figure is 1 − η⁻⁴ but for the f32
+    // round-off of the two values, a few ulps (measured 1.3e-7 apart).
+    let want = 1.0 - f64::from(eta).powi(-4);
+    eprintln!("relative error {:.9}, 1 − η⁻⁴ = {want:.9}", r.figure);
+    assert!((r.figure - want).abs() < 1e-6, "{r}");
 }
 
 // ---------------------------------------------------------------------------------------

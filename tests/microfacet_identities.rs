@@ -192,8 +192,9 @@ fn gtr_with_gamma_two_is_ggx() {
             worst = worst.max((gtr.g1(w) - ggx.g1(w)).abs());
         }
     }
-    eprintln!("GTR(γ=2) vs GGX: max |ΔG1| = {worst:.2e}");
-    assert!(worst < 1e-3, "max |ΔG1| = {worst}");
+    // The table's interpolation error, the figure `Gtr`'s docs quote (measured 7.05e-5).
+    eprintln!("GTR(γ=2) vs GGX: max |ΔG1| = {worst:.3e}");
+    assert!(worst < 7.5e-5, "max |ΔG1| = {worst}");
 }
 
 /// Normalised Blinn-Phong and Beckmann of the same `α` (Walter et al. 2007, eq. 32): close for
@@ -240,6 +241,6 @@ fn rational_g1_stays_near_the_exact_one() {
         }
     }
     eprintln!("max |G1 rational − G1 exact| = {worst:.2e} at a = {at}");
-    assert!(worst < 3.5e-3, "{worst} at a = {at}");
+    assert!(worst < 3.2e-3, "{worst} at a = {at}");
     assert!(worst > 1e-4, "the approximation is not exact: {worst}");
 }

@@ -11,6 +11,7 @@ use lobe::metals;
 use lobe::microfacet::{Ggx, Masking};
 use lobe::verify::{
     Channel, Config, Law, Report, albedo_sampled, check_bxdf, energy_bound, positivity, sidak,
+    two_sided_quantile,
 };
 use lobe::{Alpha, Vec2, Vec3, Vec4};
 
@@ -162,7 +163,12 @@ fn blue_channel_gaining_energy_fails_the_energy_bound_by_name() {
         assert_eq!(r.passed, r.law != Law::EnergyBound, "{r}");
     }
     let bound = report.get(Law::EnergyBound).unwrap();
-    assert!((bound.figure - 1.05).abs() < 1e-3, "{bound}");
+    // Exact but for f32 round-off, as for the grey lobe above (measured 1.0499999749).
+    let k = two_sided_quantile(config().significance);
+    assert!(
+        (bound.figure - 1.05).abs() <= k * bound.uncertainty + 1.05e-6,
+        "{bound}"
+    );
     assert!(
         bound.detail.starts_with("blue channel (worst of 3)"),
         "{bound}"
