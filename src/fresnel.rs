@@ -26,6 +26,7 @@ pub use average::{FresnelAverage, cosine_weighted_average};
 use crate::math::{copysign, pow5, sqrt};
 use crate::param::{ComplexIor, Eta};
 use crate::spectrum::Spectrum;
+use glam::Vec4;
 
 /// Schlick's approximation of the Fresnel reflectance, `F0 + (1 − F0)(1 − cos θd)⁵`.
 ///
@@ -218,7 +219,9 @@ fn ratio_or_one(num: f32, den: f32) -> f32 {
     if den > 0.0 { num / den } else { 1.0 }
 }
 
-/// One channel of [`conductor`], given `c = |cos θi|` and `sin²θi`.
+/// [`conductor`]'s channels, given `c = |cos θi|`, `c² < sin²θi` as `grazing` and `sin²θi`: one
+/// channel when `T` is `f32`, four at once when it is `Vec4` (the same operations in the same
+/// order, so the same numbers, bit for bit).
 ///
 /// With `n = η + iκ` and `a + ib = √(n² − sin²θi)` (the principal root, `a, b ≥ 0`):
 ///
@@ -241,41 +244,102 @@ fn ratio_or_one(num: f32, den: f32) -> f32 {
 /// form. Writing every ratio as a sum of squares over a sum of squares keeps it in `[0, 1]`;
 /// the two ratios share one division, so a channel costs two square roots and two divisions.
 #[inline(always)]
-fn conductor_channel(c: f32, sin2_i: f32, eta: f32, k: f32) -> f32 {
+fn conductor_channels<T: Lane>(c: f32, grazing: bool, sin2_i: f32, eta: T, k: T) -> T {
+    let (one, zero) = (T::splat(1.0), T::splat(0.0));
+    let (cv, c2, s2) = (T::splat(c), c * c, T::splat(sin2_i));
     // a² − b² = η² − κ² − sin²θi, in the form that rounds less (see above).
-    let c2 = c * c;
-    let re = if c2 < sin2_i {
-        (eta - 1.0) * (eta + 1.0) + c2
+    let re = if grazing {
+        (eta - one) * (eta + one) + T::splat(c2)
     } else {
-        eta * eta - sin2_i
+        eta * eta - s2
     } - k * k;
     let ek = eta * k;
-    let modulus = sqrt(re * re + 4.0 * ek * ek);
-    let big = sqrt(0.5 * (modulus + re.abs()));
-    let small = if big > 0.0 { ek / big } else { 0.0 };
-    let (a, b) = if re >= 0.0 {
-        (big, small)
-    } else {
-        (small, big)
-    };
+    let modulus = (re * re + ek * 4.0 * ek).sqrt();
+    let big = ((modulus + re.abs()) * 0.5).sqrt();
+    let small = big.positive_or(ek / big, zero);
+    let a = re.non_negative_or(big, small);
+    let b = re.non_negative_or(small, big);
 
     let b2 = b * b;
-    let (ns, ds) = or_one((c - a) * (c - a) + b2, (c + a) * (c + a) + b2);
+    // Each ratio num/den as a pair, (1, 1) where den is 0 ([`ratio_or_one`]'s limit): a
+    // select, so that the two ratios can share one division.
+    let ds = (cv + a) * (cv + a) + b2;
+    let ns = ds.positive_or((cv - a) * (cv - a) + b2, one);
+    let ds = ds.positive_or(ds, one);
     let ac = a * c;
     let bc2 = b2 * c2;
-    let (np, dp) = or_one(
-        (ac - sin2_i) * (ac - sin2_i) + bc2,
-        (ac + sin2_i) * (ac + sin2_i) + bc2,
-    );
+    let dp = (ac + s2) * (ac + s2) + bc2;
+    let np = dp.positive_or((ac - s2) * (ac - s2) + bc2, one);
+    let dp = dp.positive_or(dp, one);
     // ½ |r_s|² (1 + |r_p|²/|r_s|²) with the two ratios over one division.
-    0.5 * ns * (dp + np) / (ds * dp)
+    ns * 0.5 * (dp + np) / (ds * dp)
 }
 
-/// The ratio `num/den` as a pair, `(1, 1)` where `den` is 0 ([`ratio_or_one`]'s limit): a
-/// select, so that the ratios can share one division.
-#[inline(always)]
-fn or_one(num: f32, den: f32) -> (f32, f32) {
-    if den > 0.0 { (num, den) } else { (1.0, 1.0) }
+/// The arithmetic [`conductor_channels`] needs: `f32` (a channel) and `Vec4` (four).
+trait Lane:
+    Copy
+    + core::ops::Add<Output = Self>
+    + core::ops::Sub<Output = Self>
+    + core::ops::Mul<Output = Self>
+    + core::ops::Mul<f32, Output = Self>
+    + core::ops::Div<Output = Self>
+{
+    /// Every lane `x`.
+    fn splat(x: f32) -> Self;
+    /// The correctly rounded square root of each lane.
+    fn sqrt(self) -> Self;
+    /// `|x|` per lane.
+    fn abs(self) -> Self;
+    /// Per lane, `yes` where `self > 0` and `no` elsewhere (NaN included).
+    fn positive_or(self, yes: Self, no: Self) -> Self;
+    /// Per lane, `yes` where `self ≥ 0` and `no` elsewhere (NaN included).
+    fn non_negative_or(self, yes: Self, no: Self) -> Self;
+}
+
+impl Lane for f32 {
+    #[inline(always)]
+    fn splat(x: f32) -> Self {
+        x
+    }
+    #[inline(always)]
+    fn sqrt(self) -> Self {
+        sqrt(self)
+    }
+    #[inline(always)]
+    fn abs(self) -> Self {
+        f32::abs(self)
+    }
+    #[inline(always)]
+    fn positive_or(self, yes: Self, no: Self) -> Self {
+        if self > 0.0 { yes } else { no }
+    }
+    #[inline(always)]
+    fn non_negative_or(self, yes: Self, no: Self) -> Self {
+        if self >= 0.0 { yes } else { no }
+    }
+}
+
+impl Lane for Vec4 {
+    #[inline(always)]
+    fn splat(x: f32) -> Self {
+        Vec4::splat(x)
+    }
+    #[inline(always)]
+    fn sqrt(self) -> Self {
+        Vec4::sqrt(self)
+    }
+    #[inline(always)]
+    fn abs(self) -> Self {
+        Vec4::abs(self)
+    }
+    #[inline(always)]
+    fn positive_or(self, yes: Self, no: Self) -> Self {
+        Vec4::select(self.cmpgt(Vec4::ZERO), yes, no)
+    }
+    #[inline(always)]
+    fn non_negative_or(self, yes: Self, no: Self) -> Self {
+        Vec4::select(self.cmpge(Vec4::ZERO), yes, no)
+    }
 }
 
 /// The exact unpolarised Fresnel reflectance of a conductor with complex index `η + iκ`.
@@ -300,13 +364,46 @@ fn or_one(num: f32, den: f32) -> (f32, f32) {
 /// assert_eq!(fresnel::conductor(0.0, &gold), Vec3::ONE);
 /// # Ok::<(), lobe::ParamError>(())
 /// ```
+///
+/// An RGB or four-channel spectrum is computed in one SIMD register, its channels side by
+/// side (two square roots and two divisions for all of them); [`Fresnel::eval_per_channel`]
+/// gives the same numbers channel by channel, for loops that vectorise across calls.
 #[inline(always)]
 #[must_use]
 pub fn conductor<S: Spectrum>(cos_i: f32, ior: &ComplexIor<S>) -> S {
     let c = cos_i.abs().min(1.0);
     let sin2_i = (1.0 - c) * (1.0 + c);
-    ior.eta()
-        .zip_map(ior.k(), |eta, k| conductor_channel(c, sin2_i, eta, k))
+    let grazing = c * c < sin2_i;
+    if S::CHANNELS == 3 || S::CHANNELS == 4 {
+        // A padding lane, if any, is the vacuum (η = 1, κ = 0): finite, and discarded.
+        let lanes = |s: S, pad: f32| {
+            let w = if S::CHANNELS == 4 { s.channel(3) } else { pad };
+            Vec4::new(s.channel(0), s.channel(1), s.channel(2), w)
+        };
+        let f = conductor_channels(
+            c,
+            grazing,
+            sin2_i,
+            lanes(ior.eta(), 1.0),
+            lanes(ior.k(), 0.0),
+        );
+        S::from_fn(|i| f[i])
+    } else {
+        conductor_per_channel(c, grazing, sin2_i, ior)
+    }
+}
+
+/// [`conductor`] one channel at a time, for `c = |cos θi|` and `sin²θi`.
+#[inline(always)]
+fn conductor_per_channel<S: Spectrum>(
+    c: f32,
+    grazing: bool,
+    sin2_i: f32,
+    ior: &ComplexIor<S>,
+) -> S {
+    ior.eta().zip_map(ior.k(), |eta, k| {
+        conductor_channels(c, grazing, sin2_i, eta, k)
+    })
 }
 
 /// The common closed-form *approximation* of the conductor Fresnel reflectance; use
@@ -370,6 +467,16 @@ pub trait Fresnel: Copy {
     /// The reflectance at `cos_d = wo·m` (Burley's `cos θd`).
     #[must_use]
     fn eval(&self, cos_d: f32) -> Self::Spectrum;
+
+    /// [`eval`](Self::eval) computed channel by channel: the same numbers, bit for bit, in the
+    /// form a loop over many calls vectorises across its calls ([`crate::batch`] uses it).
+    /// The default is `eval`; [`Conductor`] overrides it, since its `eval` computes the
+    /// channels of one call side by side in a SIMD register, which such a loop cannot widen.
+    #[inline(always)]
+    #[must_use]
+    fn eval_per_channel(&self, cos_d: f32) -> Self::Spectrum {
+        self.eval(cos_d)
+    }
 }
 
 /// Schlick's approximation with normal-incidence reflectance `f0` ([`schlick`]).
@@ -416,6 +523,13 @@ impl<S: Spectrum> Fresnel for Conductor<S> {
     #[inline(always)]
     fn eval(&self, cos_d: f32) -> S {
         conductor(cos_d, &self.ior)
+    }
+
+    #[inline(always)]
+    fn eval_per_channel(&self, cos_d: f32) -> S {
+        let c = cos_d.abs().min(1.0);
+        let sin2_i = (1.0 - c) * (1.0 + c);
+        conductor_per_channel(c, c * c < sin2_i, sin2_i, &self.ior)
     }
 }
 

@@ -42,6 +42,10 @@ pub trait Spectrum:
     #[must_use]
     fn zip_map(self, other: Self, f: impl Fn(f32, f32) -> f32) -> Self;
 
+    /// The spectrum whose channel `i` is `f(i)`, as `core::array::from_fn` builds an array.
+    #[must_use]
+    fn from_fn(f: impl Fn(usize) -> f32) -> Self;
+
     /// All channels zero.
     #[inline]
     #[must_use]
@@ -110,6 +114,11 @@ impl Spectrum for f32 {
     fn zip_map(self, other: Self, f: impl Fn(f32, f32) -> f32) -> Self {
         f(self, other)
     }
+
+    #[inline(always)]
+    fn from_fn(f: impl Fn(usize) -> f32) -> Self {
+        f(0)
+    }
 }
 
 impl Spectrum for Vec3 {
@@ -133,6 +142,11 @@ impl Spectrum for Vec3 {
     #[inline(always)]
     fn zip_map(self, other: Self, f: impl Fn(f32, f32) -> f32) -> Self {
         Vec3::new(f(self.x, other.x), f(self.y, other.y), f(self.z, other.z))
+    }
+
+    #[inline(always)]
+    fn from_fn(f: impl Fn(usize) -> f32) -> Self {
+        Vec3::new(f(0), f(1), f(2))
     }
 }
 
@@ -162,6 +176,11 @@ impl Spectrum for Vec4 {
             f(self.z, other.z),
             f(self.w, other.w),
         )
+    }
+
+    #[inline(always)]
+    fn from_fn(f: impl Fn(usize) -> f32) -> Self {
+        Vec4::new(f(0), f(1), f(2), f(3))
     }
 }
 

@@ -327,19 +327,20 @@ fn rational_masking_and_anisotropy_are_measured() {
             });
         }
     }
+    // The figure `CompensatedMicrofacet`'s docs quote (measured 1.7e-3).
     judge(
         "Beckmann with Walter's rational G1, F = 1",
         &rows,
-        0.005,
+        0.002,
         true,
     );
 
     let mut rows = Vec::new();
     // (αx, αy) and the range of the furnace documented in `CompensatedMicrofacet`.
     for ((ax, ay), (lo, hi)) in [
-        ((0.2f32, 0.3f32), (0.97, 1.02)),
-        ((0.1, 0.4), (0.90, 1.04)),
-        ((0.05, 0.8), (0.74, 1.06)),
+        ((0.2f32, 0.3f32), (0.975, 1.017)),
+        ((0.1, 0.4), (0.90, 1.035)),
+        ((0.05, 0.8), (0.745, 1.057)),
     ] {
         let single = Microfacet::new(
             Ggx::new(a(ax), a(ay)),

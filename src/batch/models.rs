@@ -56,10 +56,12 @@ trait Masked: Prepare {
     ) -> Option<BxdfSample<Self::Spectrum>>;
 }
 
-/// `Masked` for a model with `masking()`, `eval_with(&at, wi, masking)` and
-/// `sample_with(&at, u, uc, masking)`.
+/// `Masked` for a model with `masking()` and the named `eval(&at, wi, masking)` and
+/// `sample(&at, u, uc, masking)` (for a microfacet model, the forms that take the Fresnel
+/// term channel by channel: see [`Fresnel::eval_per_channel`]).
 macro_rules! masked {
-    (impl<$($g:ident: $b:path),*> for $t:ty) => {
+    (impl<$($g:ident: $b:path),*> for $t:ty =>
+        $eval:ident $(::<$ef:tt>)?, $sample:ident $(::<$sf:tt>)?) => {
         impl<$($g: $b),*> Masked for $t {
             #[inline(always)]
             fn masking_term(&self) -> Masking {
@@ -68,7 +70,7 @@ macro_rules! masked {
 
             #[inline(always)]
             fn eval_masked(&self, wo: Vec3, wi: Vec3, masking: Masking) -> Self::Spectrum {
-                self.eval_with(&self.prepare(wo), wi, masking)
+                self.$eval$(::<$ef>)?(&self.prepare(wo), wi, masking)
             }
 
             #[inline(always)]
@@ -79,14 +81,15 @@ macro_rules! masked {
                 uc: f32,
                 masking: Masking,
             ) -> Option<BxdfSample<Self::Spectrum>> {
-                self.sample_with(&self.prepare(wo), u, uc, masking)
+                self.$sample$(::<$sf>)?(&self.prepare(wo), u, uc, masking)
             }
         }
     };
 }
 
-masked!(impl<D: NormalDistribution, F: Fresnel> for Microfacet<D, F>);
-masked!(impl<D: NormalDistribution> for RoughDielectric<D>);
+masked!(impl<D: NormalDistribution, F: Fresnel> for Microfacet<D, F> =>
+    eval_with::<true>, sample_with::<true>);
+masked!(impl<D: NormalDistribution> for RoughDielectric<D> => eval_with, sample_with);
 
 /// A [`Masked`] model's lanes with the masking term `MASKINGS[K]`.
 struct FixedMasking<const K: usize>;

@@ -81,9 +81,11 @@ impl<D: NormalDistribution, F: Fresnel> Microfacet<D, F> {
 
     /// `f` for `wo`, `wi` above the surface, their sum `s = wo + wi` (the half vector
     /// before normalising) with `s2 = |s|²`, and `d = D(s/|s|)`, under `masking` (the model's;
-    /// a parameter so that a batched loop can fix it, and its branch, outside the loop).
+    /// a parameter so that a batched loop can fix it, and its branch, outside the loop). A
+    /// batched loop sets `PER_CHANNEL`, for the Fresnel term's
+    /// [`eval_per_channel`](Fresnel::eval_per_channel): the same numbers.
     #[inline(always)]
-    fn value(
+    fn value<const PER_CHANNEL: bool>(
         &self,
         at: &At<View>,
         wi: Vec3,
@@ -105,7 +107,12 @@ impl<D: NormalDistribution, F: Fresnel> Microfacet<D, F> {
         // narrow lobe, where D / (4 cos θo cos θi) exceeds f32.
         let scale = (d * v).min(f32::MAX);
         // wo·h = (1 + wo·wi)/|s| = |s|/2 for unit directions.
-        self.fresnel.eval(0.5 * crate::math::sqrt(s2)) * scale
+        let cos_d = 0.5 * crate::math::sqrt(s2);
+        if PER_CHANNEL {
+            self.fresnel.eval_per_channel(cos_d) * scale
+        } else {
+            self.fresnel.eval(cos_d) * scale
+        }
     }
 
     /// The density of `wi` reflected about a normal drawn from the distribution, at their
@@ -127,13 +134,19 @@ impl<D: NormalDistribution, F: Fresnel> Microfacet<D, F> {
         if s2 > 0.0 { Some((s, s2)) } else { None }
     }
 
-    /// [`Prepare::eval_prepared`] under `masking`.
+    /// [`Prepare::eval_prepared`] under `masking` (and, for a batched loop, `PER_CHANNEL`: see
+    /// [`value`](Self::value)).
     #[inline(always)]
-    pub(crate) fn eval_with(&self, at: &At<View>, wi: Vec3, masking: Masking) -> F::Spectrum {
+    pub(crate) fn eval_with<const PER_CHANNEL: bool>(
+        &self,
+        at: &At<View>,
+        wi: Vec3,
+        masking: Masking,
+    ) -> F::Spectrum {
         match Self::half_above(at, wi) {
             Some((s, s2)) => {
                 let d = self.distribution.d_unnormalized(s, s2);
-                self.value(at, wi, s, s2, d, masking)
+                self.value::<PER_CHANNEL>(at, wi, s, s2, d, masking)
             }
             None => F::Spectrum::zero(),
         }
@@ -141,7 +154,7 @@ impl<D: NormalDistribution, F: Fresnel> Microfacet<D, F> {
 
     /// [`Prepare::eval_pdf_prepared`] under `masking`.
     #[inline(always)]
-    pub(crate) fn eval_pdf_with(
+    pub(crate) fn eval_pdf_with<const PER_CHANNEL: bool>(
         &self,
         at: &At<View>,
         wi: Vec3,
@@ -151,7 +164,7 @@ impl<D: NormalDistribution, F: Fresnel> Microfacet<D, F> {
             Some((s, s2)) => {
                 let d = self.distribution.d_unnormalized(s, s2);
                 (
-                    self.value(at, wi, s, s2, d, masking),
+                    self.value::<PER_CHANNEL>(at, wi, s, s2, d, masking),
                     self.density(at, s, d),
                 )
             }
@@ -161,7 +174,7 @@ impl<D: NormalDistribution, F: Fresnel> Microfacet<D, F> {
 
     /// [`Prepare::sample_prepared`] under `masking`.
     #[inline(always)]
-    pub(crate) fn sample_with(
+    pub(crate) fn sample_with<const PER_CHANNEL: bool>(
         &self,
         at: &At<View>,
         u: Vec2,
@@ -184,7 +197,7 @@ impl<D: NormalDistribution, F: Fresnel> Microfacet<D, F> {
         }
         Some(BxdfSample::new(
             wi,
-            self.value(at, wi, s, s2, d, masking),
+            self.value::<PER_CHANNEL>(at, wi, s, s2, d, masking),
             pdf,
             Lobes::GLOSSY_REFLECTION,
         ))
@@ -216,7 +229,7 @@ impl<D: NormalDistribution, F: Fresnel> Prepare for Microfacet<D, F> {
 
     #[inline(always)]
     fn eval_prepared(&self, at: &Self::Prepared, wi: Vec3) -> F::Spectrum {
-        self.eval_with(at, wi, self.masking)
+        self.eval_with::<false>(at, wi, self.masking)
     }
 
     #[inline(always)]
@@ -229,7 +242,7 @@ impl<D: NormalDistribution, F: Fresnel> Prepare for Microfacet<D, F> {
 
     #[inline(always)]
     fn eval_pdf_prepared(&self, at: &Self::Prepared, wi: Vec3) -> (F::Spectrum, f32) {
-        self.eval_pdf_with(at, wi, self.masking)
+        self.eval_pdf_with::<false>(at, wi, self.masking)
     }
 
     #[inline(always)]
@@ -239,7 +252,7 @@ impl<D: NormalDistribution, F: Fresnel> Prepare for Microfacet<D, F> {
         u: Vec2,
         _uc: f32,
     ) -> Option<BxdfSample<F::Spectrum>> {
-        self.sample_with(at, u, _uc, self.masking)
+        self.sample_with::<false>(at, u, _uc, self.masking)
     }
 
     #[inline(always)]
