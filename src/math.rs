@@ -250,8 +250,10 @@ pub(crate) fn erfcx_at(t: f32) -> f32 {
 }
 
 /// The complementary error function `erfc(x) = 1 − erf(x)`, with a relative error below
-/// `(2 + x²) · 2e-7` for all `x`: its tail, where `erfc` is tiny, keeps its digits up
-/// to the rounding of `e^(−x²)`'s argument, which no `f32` evaluation escapes.
+/// `(2 + x²) · 2e-7` for `x ≤ 9`: its tail, where `erfc` is tiny, keeps its digits up to the
+/// rounding of `e^(−x²)`'s argument, which no `f32` evaluation escapes. Beyond 9 the value
+/// (`erfc(9) = 4.1e-37`) turns subnormal and loses relative precision, then is 0 (from
+/// `x ≈ 10`); below `−4` it is 2 to `f32` precision.
 ///
 /// [`erfcx`]`(|x|) · e^(−x²)`, and `2 −` that for negative `x`.
 #[must_use]
@@ -482,6 +484,23 @@ mod tests {
             );
         }
         assert!((erfc(-3.0) - (2.0 - 2.209_049_7e-5)).abs() < 1e-6);
+        // Outside the measured range: 2 below −4 (erfc(−4) = 2 − 1.5e-8), and a tail that
+        // only shrinks, down to 0, beyond 9.
+        for x in [-4.0_f32, -6.0, -30.0, -1e30, f32::NEG_INFINITY] {
+            assert_eq!(erfc(x), 2.0, "erfc({x})");
+        }
+        let mut last = erfc(9.0);
+        for i in 1..=200 {
+            let e = erfc(9.0 + i as f32 * 0.01);
+            assert!(
+                (0.0..=last).contains(&e),
+                "erfc({}) = {e}",
+                9.0 + i as f32 * 0.01
+            );
+            last = e;
+        }
+        assert_eq!(erfc(11.0), 0.0);
+        assert_eq!(erfc(f32::INFINITY), 0.0);
     }
 
     #[test]

@@ -89,7 +89,7 @@ fn albedo_is_kd_plus_ks_at_normal_incidence_and_falls_from_there() {
         (0.3, 0.6, 30.0),
         (0.0, 1.0, 1e5),
     ];
-    let angles = [0.0_f32, 15.0, 30.0, 45.0, 60.0, 75.0, 89.0];
+    let angles = [0.0_f32, 15.0, 30.0, 45.0, 60.0, 75.0, 80.0, 89.0];
     let k = k_sigma(0.01, settings.len() * angles.len());
     for (kd, ks, p) in settings {
         let model = phong(kd, ks, p);

@@ -380,6 +380,35 @@ fn rational_masking_and_anisotropy_are_measured() {
     );
 }
 
+/// The width an anisotropic distribution is read at (`TabulatedAlbedo`'s docs): at normal
+/// incidence the table at the RMS width `√((αx² + αy²)/2)` is closer to the anisotropic
+/// model's own albedo than the table at the geometric mean `√(αx αy)`, by a wide margin.
+#[test]
+fn the_rms_width_matches_the_anisotropic_albedo_best() {
+    for (ax, ay) in [(0.1f32, 0.4f32), (0.05, 0.8)] {
+        let single = Microfacet::new(
+            Ggx::new(a(ax), a(ay)),
+            Masking::HeightCorrelated,
+            NoFresnel::<f32>::new(),
+        );
+        let own = stratified_albedo(&single, Vec3::Z, 11);
+        let at = |alpha: f32| {
+            let row = Ggx::isotropic(a(alpha)).conductor_albedo().unwrap();
+            f64::from(row.e(1.0))
+        };
+        let (rms, geometric) = (at(((ax * ax + ay * ay) / 2.0).sqrt()), at((ax * ay).sqrt()));
+        eprintln!(
+            "α = ({ax}, {ay}), normal incidence: albedo {own}; table at the RMS width {rms:.4}, \
+             at the geometric mean {geometric:.4}"
+        );
+        let k = common::k_sigma(0.01, 2);
+        assert!(
+            (rms - own.mean).abs() + k * own.std_err < (geometric - own.mean).abs(),
+            "α = ({ax}, {ay}): {own}, RMS {rms}, geometric {geometric}"
+        );
+    }
+}
+
 const DIELECTRIC_ETAS: [f32; 4] = [1.1, 1.33, 1.5, 2.0];
 const DIELECTRIC_ALPHAS: [f32; 4] = [0.05, 0.2, 0.5, 1.0];
 /// Outside (0°–85°) and inside (95°–180°).
@@ -864,11 +893,9 @@ fn fresnel_averages_are_exact() {
         "F_avg against a 2¹⁶-interval midpoint rule in f64: Schlick {:.1e}, conductor {:.1e}, dielectric {:.1e}",
         worst[0], worst[1], worst[2]
     );
-    // The documented bounds (`fresnel::cosine_weighted_average`, `FresnelAverage`).
-    assert!(
-        worst[0] < 1e-6 && worst[1] < 1e-6 && worst[2] < 1e-6,
-        "{worst:?}"
-    );
+    // The documented bound (`fresnel::cosine_weighted_average`), above the f32 round-off of
+    // 64 weighted terms that these figures are.
+    assert!(worst.iter().all(|&w| w < 2.5e-7), "{worst:?}");
 }
 
 /// A furnace run over a small grid for a fault check: how many points fall outside the bar.

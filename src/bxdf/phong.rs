@@ -38,8 +38,8 @@ use glam::{Vec2, Vec3};
 ///
 /// **Precision.** `1 − cos α = |r − wi|²/(2|wo||wi|)` is computed without the cancellation of
 /// `1 − r·wi`, and `cos^p α = exp(p ln(1 − (1 − cos α)))`, so that a lobe of exponent 10⁶
-/// keeps its shape next to the mirror direction (it matches an f64 evaluation within 10⁻⁴
-/// relative at 10⁻⁴…3·10⁻³ rad from it), and the value is insensitive, to first order, to
+/// keeps its shape next to the mirror direction (it matches an f64 evaluation within 10⁻⁶
+/// relative at 10⁻⁴…3·10⁻³ rad from it, measured 3.7e-7), and the value is insensitive, to first order, to
 /// input directions that are unit only up to rounding. The formula is symmetric in `wo` and `wi` operation by operation: reciprocity
 /// holds exactly in `f32`.
 ///
@@ -53,14 +53,14 @@ use glam::{Vec2, Vec3};
 ///   incidence (the lobe around `r = n` is never clipped, and `(p + 2)/(2π)` normalises
 ///   `cos^p α cos θi` over it exactly) and falls with the viewing angle as the horizon clips
 ///   the lobe; as `p → ∞` it tends to `k_d + k_s cos θo`. Measured glossy albedo (`k_s = 1`,
-///   `k_d = 0`; standard errors 10⁻³ or less; the two independent estimators agree):
+///   `k_d = 0`; 200 000 samples, standard errors at most 1.6e-3; `tests/bxdf_phong.rs`):
 ///
 ///   | `p` | θo = 0° | 30° | 60° | 80° | 89° |
 ///   | --- | --- | --- | --- | --- | --- |
-///   | 0 | 1.000 | 0.934 | 0.751 | 0.588 | 0.510 |
-///   | 1 | 1.000 | 0.882 | 0.610 | 0.411 | 0.328 |
-///   | 10 | 1.000 | 0.866 | 0.505 | 0.228 | 0.132 |
-///   | 100 | 1.000 | 0.866 | 0.500 | 0.175 | 0.049 |
+///   | 0 | 1.001 | 0.935 | 0.752 | 0.589 | 0.511 |
+///   | 1 | 1.001 | 0.883 | 0.611 | 0.411 | 0.328 |
+///   | 10 | 1.000 | 0.867 | 0.506 | 0.229 | 0.132 |
+///   | 100 | 1.000 | 0.866 | 0.500 | 0.176 | 0.049 |
 ///   | 10⁵ | 1.000 | 0.866 | 0.500 | 0.174 | 0.017 |
 ///
 ///   So the albedo never exceeds `k_d + k_s ≤ 1`, which

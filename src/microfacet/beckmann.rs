@@ -244,7 +244,8 @@ include!(concat!(env!("OUT_DIR"), "/beckmann_slopes.rs"));
 ///
 /// Newton's method converges quadratically: after a step `δ` the error left is about
 /// `|C''/(2C')| δ²`, which puts the sample's CDF within `|C''| δ²/(2C(x̃_max)) ≤ 3e-7` of `u`.
-/// The table starts within 1e-3 of the quantile, so one step ends it nearly always.
+/// The table starts within 1e-3 of the quantile for `u` in `[1e-3, 1 − 1e-3]` (3e-3 in the
+/// far tails; measured by the unit tests), so one step ends it nearly always.
 const ACCEPT_STEP: f32 = 5e-4;
 
 /// The start of the visible-slope iteration.
@@ -377,10 +378,11 @@ mod tests {
     /// The build script's table starts the iteration within 3e-3 of the quantile wherever
     /// `|q| < Q` (beyond it the start is the analytic blend, and Newton's bracket takes over).
     /// Measured: 2.2e-3 at `u = 1 − 1e-5` of a near-normal view, where the quantile turns
-    /// toward its end at `cot θ`; under 1e-3 for `u` in `[1e-3, 1 − 1e-3]`.
+    /// toward its end at `cot θ`; 9.2e-4 for `u` in `[1e-3, 1 − 1e-3]` (held below 1e-3).
     #[test]
     fn tabulated_start_is_close_to_the_quantile() {
-        let mut worst = (0.0_f64, 0.0, 0.0);
+        // (everywhere the table reaches, u in [1e-3, 1 − 1e-3])
+        let mut worst = [(0.0_f64, 0.0, 0.0); 2];
         for (cos_t, sin_t) in views() {
             for u in randoms() {
                 let d = 2.0 * u - 1.0;
@@ -389,20 +391,32 @@ mod tests {
                 }
                 let want = slope_quantile64(f64::from(cos_t), f64::from(sin_t), f64::from(u));
                 let e = (f64::from(slope_start(cos_t, sin_t, u)) - want).abs();
-                if e > worst.0 {
-                    worst = (e, cos_t, u);
+                let central = (1e-3..=1.0 - 1e-3).contains(&u);
+                for (w, counts) in worst.iter_mut().zip([true, central]) {
+                    if counts && e > w.0 {
+                        *w = (e, cos_t, u);
+                    }
                 }
             }
         }
-        std::eprintln!("largest start error {worst:?} (error, cos θ, u)");
-        assert!(worst.0 < 3e-3, "largest start error {worst:?}");
+        std::eprintln!(
+            "largest start error {:?}, for u in [1e-3, 1 − 1e-3] {:?} (error, cos θ, u)",
+            worst[0],
+            worst[1]
+        );
+        assert!(worst[0].0 < 3e-3, "largest start error {:?}", worst[0]);
+        assert!(
+            worst[1].0 < 1e-3,
+            "largest start error, central u {:?}",
+            worst[1]
+        );
     }
 
     /// The sampled slope's CDF matches `u` to `5e-7`, the tails and both ends included, with
     /// the CDF's end computed by the sampler (Walter's masking) or given as `cos θ (1 + Λ)`
     /// from the exact `Λ` (exact masking). The bar is a few `f32` roundings of the CDF: the
     /// iteration's stop at `2ε` of the end (2.4e-7) and `erfc`'s relative error, in the CDF
-    /// and in `Λ` (a few 1e-7 where the CDF turns). Measured: 3.6e-7 and 3.9e-7; 3.3e-7 with the iteration run
+    /// and in `Λ` (a few 1e-7 where the CDF turns). Measured: 3.1e-7 and 4.0e-7; 3.3e-7 with the iteration run
     /// to convergence instead of stopped by [`ACCEPT_STEP`], so the floor is the `f32` CDF,
     /// not the early stop.
     #[test]
