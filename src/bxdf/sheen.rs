@@ -44,7 +44,7 @@ const FIT_1: [f32; 5] = [21.5473, 3.82987, 0.19823, -1.97760, -4.32054];
 ///
 /// **Albedo.** The directional albedo `E(μo) = ∫ f cos θi dωi` (with `c = 1`) is tabulated
 /// at construction (32 angles, evenly spaced in `√μo`, each integrated by Gauss-Legendre
-/// rules: about 50 000 evaluations of `D`, 0.40 ms in a release build by
+/// rules: about 50 000 evaluations of `D`, 0.43 ms in a release build by
 /// `cargo bench --bench combinators`) and returned by [`albedo`](Self::albedo), so that a
 /// renderer can layer the sheen over a base energy-consistently, as OpenPBR and Imageworks
 /// do: `f_sheen + (1 − c E(μo)) f_base`. The table's values (white, `c = 1`; checked against
