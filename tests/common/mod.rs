@@ -43,6 +43,18 @@ pub fn k_sigma(family_alpha: f64, n_tests: usize) -> f64 {
     two_sided_quantile(sidak(family_alpha, n_tests))
 }
 
+/// Asserts that each estimate of `estimates` (labelled, in order) lies below the one before
+/// it by more than `k` standard errors of their difference: a significant fall, not noise.
+pub fn assert_falling(what: &str, estimates: &[(String, lobe::verify::Estimate)], k: f64) {
+    for pair in estimates.windows(2) {
+        let ((la, a), (lb, b)) = (&pair[0], &pair[1]);
+        assert!(
+            a.mean - b.mean > k * a.std_err.hypot(b.std_err),
+            "{what} should fall: {a} at {la}, then {b} at {lb}"
+        );
+    }
+}
+
 /// The unit direction at polar angle `theta_deg` and azimuth `phi` (radians).
 pub fn dir(theta_deg: f32, phi: f32) -> Vec3 {
     let t = theta_deg.to_radians();
