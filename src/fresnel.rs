@@ -371,9 +371,7 @@ impl Lane for Vec4 {
 #[inline(always)]
 #[must_use]
 pub fn conductor<S: Spectrum>(cos_i: f32, ior: &ComplexIor<S>) -> S {
-    let c = cos_i.abs().min(1.0);
-    let sin2_i = (1.0 - c) * (1.0 + c);
-    let grazing = c * c < sin2_i;
+    let (c, grazing, sin2_i) = incidence(cos_i);
     if S::CHANNELS == 3 || S::CHANNELS == 4 {
         // A padding lane, if any, is the vacuum (η = 1, κ = 0): finite, and discarded.
         let lanes = |s: S, pad: f32| {
@@ -391,6 +389,15 @@ pub fn conductor<S: Spectrum>(cos_i: f32, ior: &ComplexIor<S>) -> S {
     } else {
         conductor_per_channel(c, grazing, sin2_i, ior)
     }
+}
+
+/// `(c, c² < sin²θi, sin²θi)` for `c = |cos θi|` clamped to 1: what [`conductor_channels`]
+/// takes.
+#[inline(always)]
+fn incidence(cos_i: f32) -> (f32, bool, f32) {
+    let c = cos_i.abs().min(1.0);
+    let sin2_i = (1.0 - c) * (1.0 + c);
+    (c, c * c < sin2_i, sin2_i)
 }
 
 /// [`conductor`] one channel at a time, for `c = |cos θi|` and `sin²θi`.
@@ -527,9 +534,8 @@ impl<S: Spectrum> Fresnel for Conductor<S> {
 
     #[inline(always)]
     fn eval_per_channel(&self, cos_d: f32) -> S {
-        let c = cos_d.abs().min(1.0);
-        let sin2_i = (1.0 - c) * (1.0 + c);
-        conductor_per_channel(c, c * c < sin2_i, sin2_i, &self.ior)
+        let (c, grazing, sin2_i) = incidence(cos_d);
+        conductor_per_channel(c, grazing, sin2_i, &self.ior)
     }
 }
 

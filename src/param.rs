@@ -309,7 +309,9 @@ impl Eta {
     }
 
     /// The relative index a transmission leaving from the side of a direction with
-    /// `cos θ = cos_theta` sees: `η` from the outside (`cos_theta > 0`), `1/η` from the inside.
+    /// `cos θ = cos_theta` sees: `η` from the outside (`cos_theta > 0`), `1/η` from the inside
+    /// (any other `cos_theta`, `±0` and NaN included, as the crate's models count a direction
+    /// on the horizon).
     ///
     /// ```
     /// use lobe::Eta;

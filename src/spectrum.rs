@@ -194,6 +194,11 @@ mod tests {
         assert!(S::zero().is_black());
         assert_eq!(a.map(|x| 2.0 * x), a * 2.0);
         assert_eq!(a.zip_map(S::one(), |x, y| x + y), a + S::one());
+        assert_eq!(S::from_fn(|i| a.channel(i)), a);
+        assert_eq!(
+            S::from_fn(|i| i as f32).channel(S::CHANNELS - 1),
+            (S::CHANNELS - 1) as f32
+        );
         assert!(a.is_finite());
         assert!(!S::splat(f32::NAN).is_finite());
     }

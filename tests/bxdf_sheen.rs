@@ -12,7 +12,7 @@ use lobe::bxdf::{Bxdf, Sheen};
 use lobe::verify::{Config, Law, albedo_sampled, check_bxdf};
 use lobe::{Spectrum, Vec3};
 
-/// Statistical tests in this file: 4 harness runs, 4 roughnesses × 7 albedo angles.
+/// Statistical tests in this file: 4 harness runs, 5 roughnesses × 8 albedo angles.
 const TESTS: usize = 4 + 40;
 
 fn config() -> Config {

@@ -327,11 +327,12 @@ fn rational_masking_and_anisotropy_are_measured() {
             });
         }
     }
-    // The figure `CompensatedMicrofacet`'s docs quote (measured 1.7e-3).
+    // The figure `CompensatedMicrofacet`'s docs quote (measured 1.7e-3; the bar leaves it
+    // two standard errors of the worst point).
     judge(
         "Beckmann with Walter's rational G1, F = 1",
         &rows,
-        0.002,
+        0.0025,
         true,
     );
 
@@ -339,8 +340,8 @@ fn rational_masking_and_anisotropy_are_measured() {
     // (αx, αy) and the range of the furnace documented in `CompensatedMicrofacet`.
     for ((ax, ay), (lo, hi)) in [
         ((0.2f32, 0.3f32), (0.975, 1.017)),
-        ((0.1, 0.4), (0.90, 1.035)),
-        ((0.05, 0.8), (0.745, 1.057)),
+        ((0.1, 0.4), (0.90, 1.036)),
+        ((0.05, 0.8), (0.744, 1.057)),
     ] {
         let single = Microfacet::new(
             Ggx::new(a(ax), a(ay)),
@@ -382,7 +383,8 @@ fn rational_masking_and_anisotropy_are_measured() {
 
 /// The width an anisotropic distribution is read at (`TabulatedAlbedo`'s docs): at normal
 /// incidence the table at the RMS width `√((αx² + αy²)/2)` is closer to the anisotropic
-/// model's own albedo than the table at the geometric mean `√(αx αy)`, by a wide margin.
+/// model's own albedo than the table at the geometric mean `√(αx αy)` or at the arithmetic
+/// mean `(αx + αy)/2`, by a wide margin.
 #[test]
 fn the_rms_width_matches_the_anisotropic_albedo_best() {
     for (ax, ay) in [(0.1f32, 0.4f32), (0.05, 0.8)] {
@@ -396,16 +398,19 @@ fn the_rms_width_matches_the_anisotropic_albedo_best() {
             let row = Ggx::isotropic(a(alpha)).conductor_albedo().unwrap();
             f64::from(row.e(1.0))
         };
-        let (rms, geometric) = (at(((ax * ax + ay * ay) / 2.0).sqrt()), at((ax * ay).sqrt()));
+        let rms = at(((ax * ax + ay * ay) / 2.0).sqrt());
+        let (geometric, arithmetic) = (at((ax * ay).sqrt()), at(0.5 * (ax + ay)));
         eprintln!(
             "α = ({ax}, {ay}), normal incidence: albedo {own}; table at the RMS width {rms:.4}, \
-             at the geometric mean {geometric:.4}"
+             at the geometric mean {geometric:.4}, at the arithmetic mean {arithmetic:.4}"
         );
-        let k = common::k_sigma(0.01, 2);
-        assert!(
-            (rms - own.mean).abs() + k * own.std_err < (geometric - own.mean).abs(),
-            "α = ({ax}, {ay}): {own}, RMS {rms}, geometric {geometric}"
-        );
+        let k = common::k_sigma(0.01, 4);
+        for other in [geometric, arithmetic] {
+            assert!(
+                (rms - own.mean).abs() + k * own.std_err < (other - own.mean).abs(),
+                "α = ({ax}, {ay}): {own}, RMS {rms}, another mean {other}"
+            );
+        }
     }
 }
 

@@ -41,6 +41,11 @@
 //! branch on per call (a microfacet model's masking term) is fixed outside it. The hot
 //! models' lane code has no library calls (sine and cosine are [`crate::math::sin_cos_turns`]);
 //! a lane that calls one (Beckmann's `erfc`, Phong's `powf`) still runs, one lane at a time.
+//! A microfacet model's loop takes its Fresnel term channel by channel
+//! ([`Fresnel::eval_per_channel`](crate::fresnel::Fresnel::eval_per_channel)): the exact
+//! conductor's scalar `eval` puts an RGB spectrum's channels side by side in one SIMD
+//! register, which a loop cannot widen across calls (the same numbers either way). The other
+//! models' loops run that scalar form, one call per lane.
 //!
 //! **Run-time dispatch.** The default `x86_64` target has only SSE2, and a library cannot
 //! ask its users for `-C target-cpu=native`. On x86 and x86_64 each batched call asks the

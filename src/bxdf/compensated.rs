@@ -62,7 +62,7 @@ pub enum Compensation {
 /// ([`Masking::HeightCorrelated`](crate::microfacet::Masking::HeightCorrelated), the default)
 /// and `α ≤ 1`; [`new`](Self::new) refuses other masking and wider lobes.
 /// Beckmann's tables use its exact `Λ`; with Walter's rational `G1` the furnace stays
-/// within 1 ± 0.002 (`|E − 1|` plus k standard errors, measured 1.7e-3 by
+/// within 1 ± 0.0025 (`|E − 1|` plus k standard errors, measured 1.7e-3 by
 /// `tests/energy_compensation.rs`, `α` 0.1 to 1).
 /// [`with_albedo`](Self::with_albedo) takes a table of your own for anything else.
 ///
@@ -71,7 +71,7 @@ pub enum Compensation {
 /// best of the simple means; but an anisotropic surface's albedo depends on the azimuth of
 /// `wo`, which an isotropic table cannot follow. Measured furnace (GGX, `F = 1`, `θo` 0°, 60°
 /// and 85° at azimuths 0, 0.8 and 1.6 rad; the estimates ± 3 standard errors): 0.975 to
-/// 1.017 at `α = (0.2, 0.3)`, 0.90 to 1.035 at `(0.1, 0.4)`, 0.745 to 1.057 at
+/// 1.017 at `α = (0.2, 0.3)`, 0.90 to 1.036 at `(0.1, 0.4)`, 0.744 to 1.057 at
 /// `(0.05, 0.8)` — above 1 near grazing along the wide axis, where the compensated model
 /// **gains energy**.
 ///

@@ -7,7 +7,7 @@ use super::{
 use crate::fresnel::Dielectric;
 use crate::microfacet::{Masking, NormalDistribution};
 use crate::param::{Eta, ParamError, unit_interval};
-use crate::sampling::{cosine_hemisphere, cosine_hemisphere_pdf};
+use crate::sampling::{cosine_hemisphere, cosine_hemisphere_pdf, reuse_uniform};
 use crate::spectrum::Spectrum;
 use crate::tables::TabulatedDielectric;
 use core::f32::consts::FRAC_1_PI;
@@ -273,7 +273,9 @@ impl<D, S: Spectrum, C: Prepare<Spectrum = f32>> Prepare for Plastic<D, S, C> {
         // numbers its eval and pdf give), else evaluated together with one D.
         let (wi, coat_f, coat_pdf, lobe) = if uc < st.p_coat {
             // The coat's own lobe choice (a compensated coat has two), from what is left of uc.
-            let s = self.coat.sample_prepared(&st.coat, u, uc / st.p_coat)?;
+            let s = self
+                .coat
+                .sample_prepared(&st.coat, u, reuse_uniform(uc, 0.0, st.p_coat))?;
             (s.wi, s.f, s.pdf, Lobes::GLOSSY_REFLECTION)
         } else {
             let wi = cosine_hemisphere(u);

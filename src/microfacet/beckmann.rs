@@ -5,6 +5,7 @@ use crate::math::{
     abs, copysign, erf_inv_approx, erfc_given_exp, erfcx_at, exp, ln, ln_1p, sin_cos_turns, sqrt,
 };
 use crate::param::Alpha;
+use crate::sampling::ONE_MINUS_EPSILON;
 use glam::{Vec2, Vec3};
 
 /// `1/√π`.
@@ -231,7 +232,7 @@ impl SampleDCos for Beckmann {
     /// by `(αx, αy)` (Walter et al. 2007, eq. 28, in slope form).
     #[inline]
     fn sample_d_cos(&self, u: Vec2) -> Vec3 {
-        let r = sqrt(-ln_1p(-u.x.min(1.0 - f32::EPSILON / 2.0)));
+        let r = sqrt(-ln_1p(-u.x.min(ONE_MINUS_EPSILON)));
         let (s, c) = sin_cos_turns(u.y);
         Vec3::new(-self.width.ax * r * c, -self.width.ay * r * s, 1.0).normalize_or(Vec3::Z)
     }

@@ -189,7 +189,8 @@ fn lerp(a: f32, b: f32, t: f32) -> f32 {
 /// `α_eq = √((αx² + αy²)/2)`. Of the geometric, arithmetic and RMS means, the RMS width
 /// matches GGX's anisotropic albedo at normal incidence best (measured by
 /// `tests/energy_compensation.rs`: 0.884 for 0.878 at `α = (0.1, 0.4)`, 0.623 for 0.636 at
-/// `(0.05, 0.8)`; the geometric mean gives 0.948 and 0.948). Away from the normal an anisotropic surface's albedo depends on the azimuth of
+/// `(0.05, 0.8)`; the geometric mean gives 0.948 and 0.948, the arithmetic mean 0.916 and
+/// 0.762). Away from the normal an anisotropic surface's albedo depends on the azimuth of
 /// `wo`, which no isotropic table holds: the compensated furnace of an anisotropic model
 /// is off by what `tests/energy_compensation.rs` measures and
 /// [`CompensatedMicrofacet`](crate::bxdf::CompensatedMicrofacet) documents.
