@@ -220,10 +220,16 @@ fn estrin(c: [f32; 11], x: f32) -> f32 {
 #[must_use]
 pub fn erfcx(x: f32) -> f32 {
     if x < 0.0 {
-        2.0 * exp(x * x) - erfcx_at(1.0 / (1.0 - 0.5 * x))
+        2.0 * exp(x * x) - erfcx_nonnegative(-x)
     } else {
-        erfcx_at(1.0 / (1.0 + 0.5 * x))
+        erfcx_nonnegative(x)
     }
+}
+
+/// [`erfcx`] of `z ≥ 0`: the fit at `t = 1/(1 + z/2)`.
+#[inline(always)]
+fn erfcx_nonnegative(z: f32) -> f32 {
+    erfcx_at(1.0 / (1.0 + 0.5 * z))
 }
 
 /// The coefficients of [`erfcx`]'s fit, lowest degree first.
@@ -265,7 +271,7 @@ pub fn erfc(x: f32) -> f32 {
 #[inline(always)]
 #[must_use]
 pub(crate) fn erfc_given_exp(x: f32, e: f32) -> f32 {
-    let r = erfcx_at(1.0 / (1.0 + 0.5 * abs(x))) * e;
+    let r = erfcx_nonnegative(abs(x)) * e;
     if x >= 0.0 { r } else { 2.0 - r }
 }
 

@@ -25,7 +25,8 @@ pub enum BlinnPhongForm {
     /// exceeds 1 for small `p` (up to `π k_s` at `p = 0`); see [`BlinnPhong`].
     Modified,
     /// `K = (p + 8)/(8π)`: Akenine-Möller, Haines & Hoffman, *Real-Time Rendering*, 3rd ed.
-    /// (2008), eq. 7.49. Approximately energy-conserving: at most 7.52% above `R + k_s` (measured 1.0752 at `p ≈ 8.8`).
+    /// (2008), eq. 7.49. Approximately energy-conserving: at most 7.52% above `R + k_s`
+    /// (measured 1.0752 at `p ≈ 8.8`).
     #[default]
     Normalized,
 }
