@@ -6,9 +6,9 @@ use crate::bxdf::{CompensatedDielectric, CompensatedMicrofacet};
 use crate::fresnel::FresnelAverage;
 use crate::microfacet::NormalDistribution;
 
-impl<D: NormalDistribution, F: FresnelAverage> Batch for CompensatedMicrofacet<D, F> where
+impl<D: NormalDistribution + Clone, F: FresnelAverage> Batch for CompensatedMicrofacet<D, F> where
     F::Spectrum: Lanes
 {
 }
 
-impl<D: NormalDistribution> Batch for CompensatedDielectric<D> {}
+impl<D: NormalDistribution + Clone> Batch for CompensatedDielectric<D> {}

@@ -8,9 +8,12 @@ use core::marker::PhantomData;
 use glam::{Vec2, Vec3};
 
 /// A loop to compile for the widest SIMD the CPU has. `run` must be `#[inline(always)]`, so
-/// that it is compiled inside the dispatcher's `#[target_feature]` function, and must
-/// re-slice its inputs to one length itself, so that the compiler sees that every index is in
-/// bounds.
+/// that it is compiled inside the dispatcher's `#[target_feature]` function, must re-slice
+/// its inputs to one length itself, so that the compiler sees that every index is in
+/// bounds, and runs the model from a local clone, so that the compiler sees that no store of
+/// the loop changes the model's parameters and that reading them is always safe: through a
+/// reference, a parameter read on only some lanes (after a lane's early return) is
+/// vectorised as a masked gather from one address per iteration.
 pub(crate) trait Kernel {
     /// The loop.
     fn run(self);
@@ -93,7 +96,7 @@ fn cut(v: Vec3s<'_>, n: usize) -> Vec3s<'_> {
     }
 }
 
-impl<M: Prepare + ?Sized, O: LaneOp<M>> Kernel for EvalKernel<'_, '_, M, O>
+impl<M: Prepare + Clone, O: LaneOp<M>> Kernel for EvalKernel<'_, '_, M, O>
 where
     M::Spectrum: Lanes,
 {
@@ -102,8 +105,9 @@ where
         let n = self.n;
         let (wo, wi) = (cut(self.wo, n), cut(self.wi, n));
         let mut f = M::Spectrum::truncate(self.f, n);
+        let m = self.m.clone();
         for k in 0..n {
-            M::Spectrum::put(&mut f, k, O::eval(self.m, wo.get(k), wi.get(k)));
+            M::Spectrum::put(&mut f, k, O::eval(&m, wo.get(k), wi.get(k)));
         }
     }
 }
@@ -118,13 +122,14 @@ pub(crate) struct PdfKernel<'a, 'f, M: ?Sized, O> {
     pub(super) op: PhantomData<O>,
 }
 
-impl<M: Prepare + ?Sized, O: LaneOp<M>> Kernel for PdfKernel<'_, '_, M, O> {
+impl<M: Prepare + Clone, O: LaneOp<M>> Kernel for PdfKernel<'_, '_, M, O> {
     #[inline(always)]
     fn run(self) {
         let n = self.n;
         let (wo, wi) = (cut(self.wo, n), cut(self.wi, n));
+        let m = self.m.clone();
         for (k, pdf) in self.pdf[..n].iter_mut().enumerate() {
-            *pdf = O::pdf(self.m, wo.get(k), wi.get(k));
+            *pdf = O::pdf(&m, wo.get(k), wi.get(k));
         }
     }
 }
@@ -144,7 +149,7 @@ where
     pub(super) op: PhantomData<O>,
 }
 
-impl<M: Prepare + ?Sized, O: LaneOp<M>> Kernel for SampleKernel<'_, '_, M, O>
+impl<M: Prepare + Clone, O: LaneOp<M>> Kernel for SampleKernel<'_, '_, M, O>
 where
     M::Spectrum: Lanes,
 {
@@ -160,8 +165,9 @@ where
         let SampleOut { wi, f, pdf } = self.out;
         let (mut wi, mut f, pdf): (Vec3sMut<'_>, _, _) =
             (wi.truncate(n), M::Spectrum::truncate(f, n), &mut pdf[..n]);
+        let m = self.m.clone();
         for k in 0..n {
-            let (w, v, p) = match O::sample(self.m, wo.get(k), u.get(k), uc[k]) {
+            let (w, v, p) = match O::sample(&m, wo.get(k), u.get(k), uc[k]) {
                 Some(s) => (s.wi, s.f, s.pdf),
                 None => (Vec3::ZERO, M::Spectrum::zero(), 0.0),
             };

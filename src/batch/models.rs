@@ -23,22 +23,22 @@ impl<S: Spectrum + Lanes> Batch for DisneyDiffuse<S> {}
 impl<S: Spectrum + Lanes> Batch for Phong<S> {}
 impl<S: Spectrum + Lanes> Batch for BlinnPhong<S> {}
 impl<S: Spectrum + Lanes> Batch for Glazed<S> {}
-impl<D, S: Spectrum + Lanes, C: Prepare<Spectrum = f32>> Batch for Plastic<D, S, C> {}
+impl<D: Clone, S: Spectrum + Lanes, C: Prepare<Spectrum = f32> + Clone> Batch for Plastic<D, S, C> {}
 impl<F: Fresnel> Batch for Mirror<F> where F::Spectrum: Lanes {}
 impl Batch for SmoothDielectric {}
-impl<B: Prepare<Spectrum = f32>, S: Spectrum + Lanes> Batch for Mono<B, S> {}
+impl<B: Prepare<Spectrum = f32> + Clone, S: Spectrum + Lanes> Batch for Mono<B, S> {}
 impl Batch for ThinDielectric {}
 impl<A, B> Batch for Mix<A, B>
 where
-    A: Prepare,
-    B: Prepare<Spectrum = A::Spectrum>,
+    A: Prepare + Clone,
+    B: Prepare<Spectrum = A::Spectrum> + Clone,
     A::Spectrum: Lanes,
 {
 }
-impl<B: Prepare> Batch for TwoSided<B> where B::Spectrum: Lanes {}
+impl<B: Prepare + Clone> Batch for TwoSided<B> where B::Spectrum: Lanes {}
 impl<S: Spectrum + Lanes> Batch for DiffuseTransmission<S> {}
 impl<S: Spectrum + Lanes> Batch for Sheen<S> {}
-impl<T: LayerInterface, B: Bxdf> Batch for Layered<T, B> where B::Spectrum: Lanes {}
+impl<T: LayerInterface + Clone, B: Bxdf + Clone> Batch for Layered<T, B> where B::Spectrum: Lanes {}
 /// A model whose value depends on a masking term chosen at run time: the batched loops fix
 /// it at compile time, so that the loop does not branch on it.
 trait Masked: Prepare {
@@ -131,8 +131,8 @@ macro_rules! by_masking {
 
 /// `Batch` for a [`Masked`] model: its `eval` and `sample` loops by masking term.
 macro_rules! batch_by_masking {
-    (impl<$($g:ident: $b:path),*> for $t:ty where $s:ty) => {
-        impl<$($g: $b),*> Batch for $t
+    (impl<$($g:ident: $b:ident $(+ $more:ident)*),*> for $t:ty where $s:ty) => {
+        impl<$($g: $b $(+ $more)*),*> Batch for $t
         where
             $s: Lanes,
         {
@@ -158,5 +158,5 @@ macro_rules! batch_by_masking {
     };
 }
 
-batch_by_masking!(impl<D: NormalDistribution, F: Fresnel> for Microfacet<D, F> where F::Spectrum);
-batch_by_masking!(impl<D: NormalDistribution> for RoughDielectric<D> where f32);
+batch_by_masking!(impl<D: NormalDistribution + Clone, F: Fresnel> for Microfacet<D, F> where F::Spectrum);
+batch_by_masking!(impl<D: NormalDistribution + Clone> for RoughDielectric<D> where f32);
