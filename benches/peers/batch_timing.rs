@@ -5,6 +5,12 @@
 //! batch-timing time FILE      # times lobe's batched GGX gold conductor on them; prints ns per lane
 //! ```
 //!
+//! Besides the model's three calls it times two parts of the work on the same lanes, which
+//! the script times on Mitsuba's side too: the exact conductor Fresnel term alone (gold, RGB,
+//! at `cos θ = wo.z`), and a chain of twelve divisions `z ← y/z + 1` (`y = 1 + wi.z`, from
+//! `z = 1 + wo.z`), which shows what one division costs each side. Both loops are compiled for
+//! the widest instruction set the CPU has, by the same run-time dispatch as `lobe::batch`.
+//!
 //! The model is Mitsuba's `roughconductor` with `distribution = ggx`, `alpha = 0.3`,
 //! `material = Au`, `sample_visible = true`: the GGX conductor with gold's complex index and
 //! plain visible-normal sampling (`with_bounded_reflection(false)`). The timing runs on one
@@ -13,10 +19,12 @@
 #[path = "../inputs.rs"]
 #[allow(dead_code)]
 mod inputs;
+mod lanes;
 
+use lanes::PerLane;
 use lobe::batch::{Batch, SampleOut, Vec2s, Vec3s, Vec3sMut};
 use lobe::bxdf::Microfacet;
-use lobe::fresnel::Conductor;
+use lobe::fresnel::{Conductor, Fresnel};
 use lobe::microfacet::{Ggx, Masking};
 use lobe::verify::Pcg32;
 use lobe::{Alpha, ComplexIor, Vec3};
@@ -55,6 +63,36 @@ fn read(path: &str) -> Vec<Vec<f32>> {
     floats.chunks_exact(n).map(<[f32]>::to_vec).collect()
 }
 
+/// Gold's complex index, RGB.
+fn gold() -> ComplexIor<Vec3> {
+    ComplexIor::new(
+        Vec3::new(0.143, 0.375, 1.442),
+        Vec3::new(3.983, 2.386, 1.603),
+    )
+    .unwrap()
+}
+
+/// `(r, g, b)[k] = F(cos[k])`, the exact conductor term channel by channel (the form the
+/// batched microfacet loops use).
+struct FresnelLanes<'a> {
+    fresnel: &'a Conductor<Vec3>,
+    cos: &'a [f32],
+    out: [&'a mut [f32]; 3],
+}
+
+impl pulp::WithSimd for FresnelLanes<'_> {
+    type Output = ();
+
+    #[inline(always)]
+    fn with_simd<S: pulp::Simd>(self, _simd: S) {
+        let [r, g, b] = self.out;
+        for (k, &c) in self.cos.iter().enumerate() {
+            let f = self.fresnel.eval_per_channel(c);
+            (r[k], g[k], b[k]) = (f.x, f.y, f.z);
+        }
+    }
+}
+
 /// The median of five timed passes of `f`, in ns per lane, after one untimed pass.
 fn time(n: usize, mut f: impl FnMut()) -> f64 {
     f();
@@ -76,11 +114,7 @@ fn main() {
         Some("time") => {
             let c = read(&args[2]);
             let n = c[0].len();
-            let gold = ComplexIor::new(
-                Vec3::new(0.143, 0.375, 1.442),
-                Vec3::new(3.983, 2.386, 1.603),
-            )
-            .unwrap();
+            let gold = gold();
             let m = Microfacet::new(
                 Ggx::isotropic(Alpha::new(0.3).unwrap()).with_bounded_reflection(false),
                 Masking::HeightCorrelated,
@@ -127,9 +161,32 @@ fn main() {
                     }
                 }
             });
+            let arch = pulp::Arch::new();
+            let fresnel = black_box(Conductor { ior: gold });
+            let fresnel_alone = time(n, || {
+                arch.dispatch(FresnelLanes {
+                    fresnel: &fresnel,
+                    cos: &c[2],
+                    out: [&mut *a, &mut *b, &mut *cc],
+                });
+            });
+            let (x, y): (Vec<f32>, Vec<f32>) = c[2]
+                .iter()
+                .zip(&c[5])
+                .map(|(o, i)| (1.0 + o, 1.0 + i))
+                .unzip();
+            // Twelve dependent divisions per lane: z ← y/z + 1, from z = x.
+            let divide = time(n, || {
+                arch.dispatch(PerLane {
+                    x: &x,
+                    y: &y,
+                    out: &mut *a,
+                    f: |x: f32, y: f32| (0..12).fold(x, |z, _| y / z + 1.0),
+                });
+            }) / 12.0;
             black_box(&o);
             println!(
-                "{{\"eval\": {eval}, \"pdf\": {pdf}, \"sample\": {sample}, \"copy\": {copy}}}"
+                "{{\"eval\": {eval}, \"pdf\": {pdf}, \"sample\": {sample}, \"copy\": {copy}, \"fresnel\": {fresnel_alone}, \"divide\": {divide}}}"
             );
         }
         _ => eprintln!("usage: batch-timing write FILE N | batch-timing time FILE"),

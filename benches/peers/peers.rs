@@ -2,6 +2,12 @@
 //! inputs: criterion's per-function figures, then interleaved rounds (A B C A B C …) with the
 //! ratios. (Mitsuba 3, which needs Python and LLVM: `benches/peers/vs_mitsuba.py`.)
 //!
+//! Last, the ceiling of batching for work bound by the divider: one square root and one
+//! division per element, scalar (measured as lobe's scalar calls are) against the same loop
+//! compiled for the widest instruction set (pulp's run-time dispatch, as `lobe::batch` does).
+//! A kernel whose time is mostly square roots and divisions cannot gain more from batching
+//! than this ratio, whatever else it does.
+//!
 //! ```sh
 //! cargo bench -p lobe-peers
 //! ```
@@ -10,11 +16,13 @@
 mod inputs;
 #[path = "../interleave.rs"]
 mod interleave;
+mod lanes;
 
 use bsdf::BSDF;
 use criterion::{Criterion, Throughput};
 use inputs::{Inputs, N, inputs};
 use interleave::{Kernel, ratio, rounds, spread};
+use lanes::PerLane;
 use lobe::batch::{Batch, SampleOut, Vec2s, Vec3s, Vec3sMut};
 use lobe::bxdf::{Bxdf, Lambert, Microfacet};
 use lobe::fresnel::Schlick;
@@ -170,6 +178,32 @@ fn batch_kernels<'a, B: Batch<Spectrum = Vec3>>(
     ]
 }
 
+/// The divider's ceiling, scalar and batched: one square root and one division per element,
+/// on `1 + cos θo` and `1 + cos θi` of the inputs.
+fn divider_kernels(i: &Inputs) -> [Kernel<'static>; 2] {
+    let x: Vec<f32> = i.wo.iter().map(|w| 1.0 + w.z).collect();
+    let y: Vec<f32> = i.wi.iter().map(|w| 1.0 + w.z).collect();
+    let (xs, ys) = (x.clone(), y.clone());
+    let arch = pulp::Arch::new();
+    let mut out = vec![0.0; N];
+    [
+        Kernel::new("divider alone (√x / y): scalar", N, move || {
+            for k in 0..N {
+                black_box(xs[k].sqrt() / ys[k]);
+            }
+        }),
+        Kernel::new("divider alone (√x / y): batched", N, move || {
+            arch.dispatch(PerLane {
+                x: &x,
+                y: &y,
+                out: &mut out,
+                f: |x: f32, y: f32| x.sqrt() / y,
+            });
+            black_box(&out);
+        }),
+    ]
+}
+
 /// The same three calls of a `bsdf` model.
 fn peer_kernels<'a, B: BSDF>(name: &str, m: &'a B, i: &'a Inputs64) -> [Kernel<'a>; 3] {
     let m = black_box(m);
@@ -236,8 +270,19 @@ fn main() {
         g.finish();
     }
 
+    let [scalar_div, batched_div] = divider_kernels(&inputs);
+    let mut g = c.benchmark_group("divider alone (√x / y)");
+    g.throughput(Throughput::Elements(N as u64));
+    let mut divider = [scalar_div, batched_div];
+    for (k, label) in divider.iter_mut().zip(["scalar", "batched"]) {
+        g.bench_function(label, |bench| bench.iter(&mut k.pass));
+    }
+    g.finish();
+
     // Interleaved rounds: every kernel once per round, in the same order.
     let mut kernels: Vec<Kernel> = triples.into_iter().flatten().collect();
+    let work = kernels.len();
+    kernels.extend(divider);
     let times = rounds(&mut kernels, 15, Duration::from_millis(40));
     println!(
         "\nInterleaved, 15 rounds, ns per evaluation: median [min, max]; ratios = medians of the per-round ratios"
@@ -248,7 +293,7 @@ fn main() {
         let (m, lo, hi) = spread(t);
         format!("{m:.2} [{lo:.2}, {hi:.2}]")
     };
-    for (ks, ts) in kernels.chunks(3).zip(times.chunks(3)) {
+    for (ks, ts) in kernels[..work].chunks(3).zip(times[..work].chunks(3)) {
         let (r, rmin, rmax) = ratio(&ts[0], &ts[2]);
         let (x, xmin, xmax) = ratio(&ts[0], &ts[1]);
         println!(
@@ -259,4 +304,10 @@ fn main() {
             fmt(&ts[2]),
         );
     }
+    let (x, xmin, xmax) = ratio(&times[work], &times[work + 1]);
+    println!(
+        "| divider alone (√x / y) | {} | {} | — | — | {x:.1}× [{xmin:.1}, {xmax:.1}] |",
+        fmt(&times[work]),
+        fmt(&times[work + 1]),
+    );
 }

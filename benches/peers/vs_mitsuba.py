@@ -119,7 +119,30 @@ def time_mitsuba(c):
     def copy():
         return wo + wi
 
+    # The two parts batch-timing also times: the exact conductor term alone (lobe's gold, RGB,
+    # one complex index per channel as Mitsuba's RGB variant holds it, at cos = wo.z), and a
+    # chain of twelve divisions, which shows whether the JIT divides exactly (at the exact
+    # division's throughput) or by an approximate reciprocal.
+    gold = [(0.143, 3.983), (0.375, 2.386), (1.442, 1.603)]
+
+    def fresnel():
+        return [
+            mi.fresnel_conductor(wo.z, dr.llvm.ad.Complex2f(dr.opaque(mi.Float, e), dr.opaque(mi.Float, k)))
+            for e, k in gold
+        ]
+
+    x, y = 1.0 + wo.z, 1.0 + wi.z
+    dr.eval(x, y)
+
+    def divide():
+        z = x
+        for _ in range(12):
+            z = y / z + 1.0
+        return z
+
     return {
+        "fresnel": median_launch(fresnel, n),
+        "divide": median_launch(divide, n) / 12,
         "eval": median_launch(lambda: bsdf.eval(ctx, si, wi), n),
         "pdf": median_launch(lambda: bsdf.pdf(ctx, si, wi), n),
         "sample": median_launch(sample, n),
@@ -142,12 +165,17 @@ def main():
     print("ns per lane: median [min, max] over rounds; ratio = median of per-round lobe/Mitsuba\n")
     print("| kernel | lobe batched | Mitsuba 3 (llvm_ad_rgb) | ratio |")
     print("| --- | --- | --- | --- |")
-    for k in ["eval", "pdf", "sample", "copy"]:
+    names = {
+        "copy": "memory pass (wo + wi)",
+        "fresnel": "conductor Fresnel alone (RGB)",
+        "divide": "one division (of a chain of 12)",
+    }
+    for k in ["eval", "pdf", "sample", "copy", "fresnel", "divide"]:
         lo = [r[0][k] for r in rounds]
         mi_ = [r[1][k] for r in rounds]
         ra = [a / b for a, b in zip(lo, mi_)]
         fmt = lambda xs: f"{statistics.median(xs):.2f} [{min(xs):.2f}, {max(xs):.2f}]"  # noqa: E731
-        name = "memory pass (wo + wi)" if k == "copy" else k
+        name = names.get(k, k)
         print(f"| {name} | {fmt(lo)} | {fmt(mi_)} | {statistics.median(ra):.2f}× [{min(ra):.2f}, {max(ra):.2f}] |")
 
 
