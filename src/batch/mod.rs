@@ -124,7 +124,9 @@ pub struct SampleOut<'a, S: Lanes> {
 /// Every model of the crate implements it; a model of your own that implements
 /// [`Prepare`] and `Clone` gets it from `impl Batch for MyModel {}`. A batched call clones
 /// the model once, for its loop (see the [module docs](self)); a model is a handful of
-/// numbers and, at most, a table of them, so that costs nothing per lane.
+/// numbers and, at most, a table of them, so that costs nothing per lane. (A model that owns
+/// heap data, a measured BRDF in a `Vec`, would allocate on every batched call: hold such
+/// data by reference or in an `Arc`.)
 pub trait Batch: Prepare + Clone
 where
     Self::Spectrum: Lanes,
