@@ -2,6 +2,9 @@
 //! inputs: criterion's per-function figures, then interleaved rounds (A B C A B C …) with the
 //! ratios. (Mitsuba 3, which needs Python and LLVM: `benches/peers/vs_mitsuba.py`.)
 //!
+//! Then lobe alone, scalar against batched, where the peer has no model: the GGX rough
+//! dielectric (η 1.5, the sides mixed as in the shading benchmarks).
+//!
 //! Last, the ceiling of batching for work bound by the divider: one square root and one
 //! division per element, scalar (measured as lobe's scalar calls are) against the same loop
 //! compiled for the widest instruction set (pulp's run-time dispatch, as `lobe::batch` does).
@@ -24,10 +27,10 @@ use inputs::{Inputs, N, inputs};
 use interleave::{Kernel, ratio, rounds, spread};
 use lanes::PerLane;
 use lobe::batch::{Batch, SampleOut, Vec2s, Vec3s, Vec3sMut};
-use lobe::bxdf::{Bxdf, Lambert, Microfacet};
+use lobe::bxdf::{Bxdf, Lambert, Microfacet, RoughDielectric};
 use lobe::fresnel::Schlick;
 use lobe::microfacet::{Ggx, Masking};
-use lobe::{Alpha, Vec3};
+use lobe::{Alpha, Eta, Vec3};
 use std::hint::black_box;
 use std::time::Duration;
 
@@ -75,11 +78,7 @@ fn to_f64(i: &Inputs) -> Inputs64 {
 }
 
 /// The three calls of a lobe model over the inputs, as kernels.
-fn lobe_kernels<'a, B: Bxdf<Spectrum = Vec3>>(
-    name: &str,
-    m: &'a B,
-    i: &'a Inputs,
-) -> [Kernel<'a>; 3] {
+fn lobe_kernels<'a, B: Bxdf>(name: &str, m: &'a B, i: &'a Inputs) -> [Kernel<'a>; 3] {
     // The model through `black_box`, so that its parameters are not folded into the loop;
     // the inputs are read from memory as a renderer's would be.
     let m = black_box(m);
@@ -178,6 +177,61 @@ fn batch_kernels<'a, B: Batch<Spectrum = Vec3>>(
     ]
 }
 
+/// [`batch_kernels`] for a monochrome model.
+fn batch_kernels_mono<'a, B: Batch<Spectrum = f32>>(
+    name: &str,
+    m: &'a B,
+    s: &'a Soa,
+) -> [Kernel<'a>; 3] {
+    let m = black_box(m);
+    let v3 = |v: &'a [Vec<f32>; 3]| Vec3s {
+        x: &v[0],
+        y: &v[1],
+        z: &v[2],
+    };
+    let (wo, wi) = (v3(&s.wo), v3(&s.wi));
+    let u = Vec2s {
+        x: &s.u[0],
+        y: &s.u[1],
+    };
+    let (mut f, mut pdf) = (vec![0.0; N], vec![0.0; N]);
+    let mut o = vec![vec![0.0; N]; 5];
+    [
+        Kernel::new(format!("{name} eval"), N, move || {
+            m.eval_batch(wo, wi, &mut f).unwrap();
+            black_box(&f);
+        }),
+        Kernel::new(format!("{name} pdf"), N, move || {
+            m.pdf_batch(wo, wi, &mut pdf).unwrap();
+            black_box(&pdf);
+        }),
+        Kernel::new(format!("{name} sample"), N, move || {
+            let [a, b, c, d, e] = &mut o[..] else {
+                unreachable!()
+            };
+            let out = SampleOut {
+                wi: Vec3sMut { x: a, y: b, z: c },
+                f: &mut d[..],
+                pdf: e,
+            };
+            m.sample_batch(wo, u, &s.uc, out).unwrap();
+            black_box(&o);
+        }),
+    ]
+}
+
+/// The inputs with the sides mixed, as the shading benchmarks time transmissive models: `wi`
+/// below the surface for odd `k`, `wo` below for `k mod 4 ≥ 2`.
+fn two_sided(i: &Inputs) -> Inputs {
+    let flip = |w: Vec3, below: bool| if below { Vec3::new(w.x, w.y, -w.z) } else { w };
+    Inputs {
+        wo: (0..N).map(|k| flip(i.wo[k], k % 4 >= 2)).collect(),
+        wi: (0..N).map(|k| flip(i.wi[k], k % 2 == 1)).collect(),
+        u: i.u.clone(),
+        uc: i.uc.clone(),
+    }
+}
+
 /// The divider's ceiling, scalar and batched: one square root and one division per element,
 /// on `1 + cos θo` and `1 + cos θi` of the inputs.
 fn divider_kernels(i: &Inputs) -> [Kernel<'static>; 2] {
@@ -270,19 +324,33 @@ fn main() {
         g.finish();
     }
 
-    let [scalar_div, batched_div] = divider_kernels(&inputs);
-    let mut g = c.benchmark_group("divider alone (√x / y)");
-    g.throughput(Throughput::Elements(N as u64));
-    let mut divider = [scalar_div, batched_div];
-    for (k, label) in divider.iter_mut().zip(["scalar", "batched"]) {
-        g.bench_function(label, |bench| bench.iter(&mut k.pass));
+    // Pairs of (lobe scalar, lobe batched) for work the peer has no model of: the rough
+    // dielectric (the sides mixed), and the divider alone.
+    let glass = RoughDielectric::new(
+        Ggx::isotropic(Alpha::new(ALPHA).unwrap()),
+        Eta::new(1.5).unwrap(),
+    );
+    let mixed = two_sided(&inputs);
+    let mixed_soa = to_soa(&mixed);
+    let mut pairs: Vec<[Kernel; 2]> = Vec::new();
+    let lobe_g = lobe_kernels("GGX rough glass η 1.5, sides mixed", &glass, &mixed);
+    let batch_g = batch_kernels_mono("GGX rough glass η 1.5, sides mixed", &glass, &mixed_soa);
+    for (a, b) in lobe_g.into_iter().zip(batch_g) {
+        pairs.push([a, b]);
     }
-    g.finish();
+    pairs.push(divider_kernels(&inputs));
+    for [a, b] in &mut pairs {
+        let mut g = c.benchmark_group(a.name.replace(": scalar", ""));
+        g.throughput(Throughput::Elements(N as u64));
+        g.bench_function("lobe", |bench| bench.iter(&mut a.pass));
+        g.bench_function("lobe batched", |bench| bench.iter(&mut b.pass));
+        g.finish();
+    }
 
     // Interleaved rounds: every kernel once per round, in the same order.
     let mut kernels: Vec<Kernel> = triples.into_iter().flatten().collect();
     let work = kernels.len();
-    kernels.extend(divider);
+    kernels.extend(pairs.into_iter().flatten());
     let times = rounds(&mut kernels, 15, Duration::from_millis(40));
     println!(
         "\nInterleaved, 15 rounds, ns per evaluation: median [min, max]; ratios = medians of the per-round ratios"
@@ -304,10 +372,13 @@ fn main() {
             fmt(&ts[2]),
         );
     }
-    let (x, xmin, xmax) = ratio(&times[work], &times[work + 1]);
-    println!(
-        "| divider alone (√x / y) | {} | {} | — | — | {x:.1}× [{xmin:.1}, {xmax:.1}] |",
-        fmt(&times[work]),
-        fmt(&times[work + 1]),
-    );
+    for (ks, ts) in kernels[work..].chunks(2).zip(times[work..].chunks(2)) {
+        let (x, xmin, xmax) = ratio(&ts[0], &ts[1]);
+        println!(
+            "| {} | {} | {} | — | — | {x:.1}× [{xmin:.1}, {xmax:.1}] |",
+            ks[0].name.replace(": scalar", ""),
+            fmt(&ts[0]),
+            fmt(&ts[1]),
+        );
+    }
 }
