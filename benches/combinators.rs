@@ -22,14 +22,14 @@ mod inputs;
 mod passes;
 
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
-use inputs::{Inputs, N, inputs};
+use inputs::{Inputs, N, inputs, two_sided};
 use lobe::bxdf::{
     CoatedConductor, CoatedDiffuse, DiffuseTransmission, Lambert, Microfacet, Mix, Sheen, TwoSided,
 };
 use lobe::fresnel::Conductor;
 use lobe::microfacet::{Ggx, Masking};
 use lobe::{Alpha, Eta, Vec3, metals};
-use passes::{group, model, two_sided};
+use passes::{group, model};
 use std::hint::black_box;
 
 /// The inputs seen from below for `k mod 4 ≥ 2` (both directions mirrored).

@@ -14,11 +14,11 @@
 //! rounds of `interleave.rs` time every kernel in alternation (31 rounds) and print each one's
 //! median with its range and the median of the per-round ratios.
 
+// Its `two_sided` is for the transmissive models of the other benches.
+#[allow(dead_code)]
 mod inputs;
 #[path = "interleave.rs"]
 mod interleave;
-// Its `two_sided` is for the transmissive models of the other benches.
-#[allow(dead_code)]
 #[path = "common/passes.rs"]
 mod passes;
 

@@ -43,3 +43,15 @@ pub fn inputs() -> Inputs {
     let uc = (0..N).map(|_| rng.next_f32()).collect();
     Inputs { wo, wi, u, uc }
 }
+
+/// The inputs with the sides mixed, for the transmissive models: `wi` below the surface for
+/// odd `k`, `wo` below for `k mod 4 ≥ 2`.
+pub fn two_sided(i: &Inputs) -> Inputs {
+    let flip = |w: Vec3, below: bool| if below { Vec3::new(w.x, w.y, -w.z) } else { w };
+    Inputs {
+        wo: (0..N).map(|k| flip(i.wo[k], k % 4 >= 2)).collect(),
+        wi: (0..N).map(|k| flip(i.wi[k], k % 2 == 1)).collect(),
+        u: i.u.clone(),
+        uc: i.uc.clone(),
+    }
+}

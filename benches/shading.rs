@@ -31,7 +31,7 @@ mod inputs;
 mod passes;
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use inputs::{Inputs, N, inputs};
+use inputs::{Inputs, N, inputs, two_sided};
 use lobe::bxdf::{
     BlinnPhong, BlinnPhongForm, Bxdf, DisneyDiffuse, EnergyPreservingOrenNayar, Glazed, Lambert,
     Microfacet, Mirror, OrenNayar, Phong, Plastic, Prepare, RoughDielectric, SmoothDielectric,
@@ -40,7 +40,7 @@ use lobe::bxdf::{
 use lobe::fresnel::{self, Conductor};
 use lobe::microfacet::{Beckmann, BlinnPhongNdf, Ggx, Gtr, Masking, NormalDistribution};
 use lobe::{Alpha, Eta, Roughness, Vec3};
-use passes::{group, model, two_sided};
+use passes::{group, model};
 use std::hint::black_box;
 
 /// Evaluations per prepared state in the renderer's pattern.

@@ -1,10 +1,8 @@
 //! The benchmark passes shared by `benches/shading.rs` and `benches/combinators.rs`: a group
-//! reported per input, the inputs with the sides mixed, and one pass of `eval`, `pdf` and
-//! `sample` over the inputs.
+//! reported per input, and one pass of `eval`, `pdf` and `sample` over the inputs.
 
 use super::inputs::{Inputs, N};
 use criterion::{BenchmarkGroup, Criterion, Throughput};
-use lobe::Vec3;
 use lobe::bxdf::Bxdf;
 use std::hint::black_box;
 use std::time::Duration;
@@ -27,18 +25,6 @@ pub fn group<'a>(
     let mut g = c.benchmark_group(name);
     g.throughput(Throughput::Elements(N as u64));
     g
-}
-
-/// The inputs with the sides mixed, for the transmissive models: `wi` below the surface for
-/// odd `k`, `wo` below for `k mod 4 ≥ 2`.
-pub fn two_sided(i: &Inputs) -> Inputs {
-    let flip = |w: Vec3, below: bool| if below { Vec3::new(w.x, w.y, -w.z) } else { w };
-    Inputs {
-        wo: (0..N).map(|k| flip(i.wo[k], k % 4 >= 2)).collect(),
-        wi: (0..N).map(|k| flip(i.wi[k], k % 2 == 1)).collect(),
-        u: i.u.clone(),
-        uc: i.uc.clone(),
-    }
 }
 
 /// `eval`, `pdf` and `sample` of `model` over the inputs.

@@ -23,10 +23,10 @@ mod lanes;
 
 use bsdf::BSDF;
 use criterion::{Criterion, Throughput};
-use inputs::{Inputs, N, inputs};
+use inputs::{Inputs, N, inputs, two_sided};
 use interleave::{Kernel, ratio, rounds, spread};
 use lanes::PerLane;
-use lobe::batch::{Batch, SampleOut, Vec2s, Vec3s, Vec3sMut};
+use lobe::batch::{Batch, Lanes, SampleOut, Vec2s, Vec3s, Vec3sMut};
 use lobe::bxdf::{Bxdf, Lambert, Microfacet, RoughDielectric};
 use lobe::fresnel::Schlick;
 use lobe::microfacet::{Ggx, Masking};
@@ -122,33 +122,62 @@ fn to_soa(i: &Inputs) -> Soa {
     }
 }
 
+impl Soa {
+    /// The directions and random numbers as the batched calls take them.
+    fn views(&self) -> (Vec3s<'_>, Vec3s<'_>, Vec2s<'_>) {
+        fn v3(v: &[Vec<f32>; 3]) -> Vec3s<'_> {
+            Vec3s {
+                x: &v[0],
+                y: &v[1],
+                z: &v[2],
+            }
+        }
+        let u = Vec2s {
+            x: &self.u[0],
+            y: &self.u[1],
+        };
+        (v3(&self.wo), v3(&self.wi), u)
+    }
+}
+
+/// A spectrum's batched values, written into one buffer per channel.
+trait Channels: Lanes {
+    /// How many channels.
+    const COUNT: usize;
+    /// The output slices over `buffers` (`COUNT` of them).
+    fn slices(buffers: &mut [Vec<f32>]) -> Self::Mut<'_>;
+}
+
+impl Channels for f32 {
+    const COUNT: usize = 1;
+    fn slices(buffers: &mut [Vec<f32>]) -> &mut [f32] {
+        &mut buffers[0]
+    }
+}
+
+impl Channels for Vec3 {
+    const COUNT: usize = 3;
+    fn slices(buffers: &mut [Vec<f32>]) -> Vec3sMut<'_> {
+        let [x, y, z] = buffers else { unreachable!() };
+        Vec3sMut { x, y, z }
+    }
+}
+
 /// The three calls of a lobe model through `lobe::batch`, each kernel owning its output
 /// buffers.
-fn batch_kernels<'a, B: Batch<Spectrum = Vec3>>(
-    name: &str,
-    m: &'a B,
-    s: &'a Soa,
-) -> [Kernel<'a>; 3] {
+fn batch_kernels<'a, B: Batch>(name: &str, m: &'a B, s: &'a Soa) -> [Kernel<'a>; 3]
+where
+    B::Spectrum: Channels,
+{
     let m = black_box(m);
-    let v3 = |v: &'a [Vec<f32>; 3]| Vec3s {
-        x: &v[0],
-        y: &v[1],
-        z: &v[2],
-    };
-    let (wo, wi) = (v3(&s.wo), v3(&s.wi));
-    let u = Vec2s {
-        x: &s.u[0],
-        y: &s.u[1],
-    };
+    let (wo, wi, u) = s.views();
     let buffers = |n: usize| -> Vec<Vec<f32>> { vec![vec![0.0; N]; n] };
+    let channels = <B::Spectrum as Channels>::COUNT;
     [
         Kernel::new(format!("{name} eval"), N, {
-            let mut o = buffers(3);
+            let mut o = buffers(channels);
             move || {
-                let [x, y, z] = &mut o[..] else {
-                    unreachable!()
-                };
-                m.eval_batch(wo, wi, Vec3sMut { x, y, z }).unwrap();
+                m.eval_batch(wo, wi, B::Spectrum::slices(&mut o)).unwrap();
                 black_box(&o);
             }
         }),
@@ -160,76 +189,22 @@ fn batch_kernels<'a, B: Batch<Spectrum = Vec3>>(
             }
         }),
         Kernel::new(format!("{name} sample"), N, {
-            let mut o = buffers(7);
+            // wi's three coordinates, the value's channels, the density.
+            let mut o = buffers(3 + channels + 1);
             move || {
-                let [a, b, c, d, e, f, g] = &mut o[..] else {
-                    unreachable!()
-                };
+                let (dir, rest) = o.split_at_mut(3);
+                let (f, pdf) = rest.split_at_mut(channels);
+                let [x, y, z] = dir else { unreachable!() };
                 let out = SampleOut {
-                    wi: Vec3sMut { x: a, y: b, z: c },
-                    f: Vec3sMut { x: d, y: e, z: f },
-                    pdf: g,
+                    wi: Vec3sMut { x, y, z },
+                    f: B::Spectrum::slices(f),
+                    pdf: &mut pdf[0],
                 };
                 m.sample_batch(wo, u, &s.uc, out).unwrap();
                 black_box(&o);
             }
         }),
     ]
-}
-
-/// [`batch_kernels`] for a monochrome model.
-fn batch_kernels_mono<'a, B: Batch<Spectrum = f32>>(
-    name: &str,
-    m: &'a B,
-    s: &'a Soa,
-) -> [Kernel<'a>; 3] {
-    let m = black_box(m);
-    let v3 = |v: &'a [Vec<f32>; 3]| Vec3s {
-        x: &v[0],
-        y: &v[1],
-        z: &v[2],
-    };
-    let (wo, wi) = (v3(&s.wo), v3(&s.wi));
-    let u = Vec2s {
-        x: &s.u[0],
-        y: &s.u[1],
-    };
-    let (mut f, mut pdf) = (vec![0.0; N], vec![0.0; N]);
-    let mut o = vec![vec![0.0; N]; 5];
-    [
-        Kernel::new(format!("{name} eval"), N, move || {
-            m.eval_batch(wo, wi, &mut f).unwrap();
-            black_box(&f);
-        }),
-        Kernel::new(format!("{name} pdf"), N, move || {
-            m.pdf_batch(wo, wi, &mut pdf).unwrap();
-            black_box(&pdf);
-        }),
-        Kernel::new(format!("{name} sample"), N, move || {
-            let [a, b, c, d, e] = &mut o[..] else {
-                unreachable!()
-            };
-            let out = SampleOut {
-                wi: Vec3sMut { x: a, y: b, z: c },
-                f: &mut d[..],
-                pdf: e,
-            };
-            m.sample_batch(wo, u, &s.uc, out).unwrap();
-            black_box(&o);
-        }),
-    ]
-}
-
-/// The inputs with the sides mixed, as the shading benchmarks time transmissive models: `wi`
-/// below the surface for odd `k`, `wo` below for `k mod 4 ≥ 2`.
-fn two_sided(i: &Inputs) -> Inputs {
-    let flip = |w: Vec3, below: bool| if below { Vec3::new(w.x, w.y, -w.z) } else { w };
-    Inputs {
-        wo: (0..N).map(|k| flip(i.wo[k], k % 4 >= 2)).collect(),
-        wi: (0..N).map(|k| flip(i.wi[k], k % 2 == 1)).collect(),
-        u: i.u.clone(),
-        uc: i.uc.clone(),
-    }
 }
 
 /// The divider's ceiling, scalar and batched: one square root and one division per element,
@@ -334,7 +309,7 @@ fn main() {
     let mixed_soa = to_soa(&mixed);
     let mut pairs: Vec<[Kernel; 2]> = Vec::new();
     let lobe_g = lobe_kernels("GGX rough glass η 1.5, sides mixed", &glass, &mixed);
-    let batch_g = batch_kernels_mono("GGX rough glass η 1.5, sides mixed", &glass, &mixed_soa);
+    let batch_g = batch_kernels("GGX rough glass η 1.5, sides mixed", &glass, &mixed_soa);
     for (a, b) in lobe_g.into_iter().zip(batch_g) {
         pairs.push([a, b]);
     }
@@ -348,8 +323,12 @@ fn main() {
     }
 
     // Interleaved rounds: every kernel once per round, in the same order.
+    let sizes: Vec<usize> = triples
+        .iter()
+        .map(|_| 3)
+        .chain(pairs.iter().map(|_| 2))
+        .collect();
     let mut kernels: Vec<Kernel> = triples.into_iter().flatten().collect();
-    let work = kernels.len();
     kernels.extend(pairs.into_iter().flatten());
     let times = rounds(&mut kernels, 15, Duration::from_millis(40));
     println!(
@@ -361,22 +340,22 @@ fn main() {
         let (m, lo, hi) = spread(t);
         format!("{m:.2} [{lo:.2}, {hi:.2}]")
     };
-    for (ks, ts) in kernels[..work].chunks(3).zip(times[..work].chunks(3)) {
-        let (r, rmin, rmax) = ratio(&ts[0], &ts[2]);
+    let mut first = 0;
+    for size in sizes {
+        let (ks, ts) = (&kernels[first..first + size], &times[first..first + size]);
+        first += size;
+        // Each row: lobe scalar, lobe batched and, in a triple, the peer.
+        let (peer, versus) = match ts.get(2) {
+            Some(p) => {
+                let (r, rmin, rmax) = ratio(&ts[0], p);
+                (fmt(p), format!("{r:.2}× [{rmin:.2}, {rmax:.2}]"))
+            }
+            None => ("—".to_owned(), "—".to_owned()),
+        };
         let (x, xmin, xmax) = ratio(&ts[0], &ts[1]);
         println!(
-            "| {} | {} | {} | {} | {r:.2}× [{rmin:.2}, {rmax:.2}] | {x:.1}× [{xmin:.1}, {xmax:.1}] |",
-            ks[0].name.replace(": lobe", ""),
-            fmt(&ts[0]),
-            fmt(&ts[1]),
-            fmt(&ts[2]),
-        );
-    }
-    for (ks, ts) in kernels[work..].chunks(2).zip(times[work..].chunks(2)) {
-        let (x, xmin, xmax) = ratio(&ts[0], &ts[1]);
-        println!(
-            "| {} | {} | {} | — | — | {x:.1}× [{xmin:.1}, {xmax:.1}] |",
-            ks[0].name.replace(": scalar", ""),
+            "| {} | {} | {} | {peer} | {versus} | {x:.1}× [{xmin:.1}, {xmax:.1}] |",
+            ks[0].name.replace(": lobe", "").replace(": scalar", ""),
             fmt(&ts[0]),
             fmt(&ts[1]),
         );
