@@ -383,9 +383,10 @@ fn the_combinators_and_layered_models_equal_the_scalar_path() {
     check("Sheen", &Sheen::new(rgb, 0.4).unwrap());
 }
 
-/// The energy-compensated models (`lobe::batch`'s default loops over their `Prepare` code):
-/// Kulla & Conty's lobe on a conductor and on a white microfacet, Turquin's scaling, the
-/// compensated glass in both transport modes and the compensated plastic.
+/// The energy-compensated models: Kulla & Conty's lobe on a conductor (under each masking
+/// term: the compensated microfacet model takes the microfacet models' loops, one per term)
+/// and on a white microfacet, Turquin's scaling, the compensated glass in both transport
+/// modes and the compensated plastic (their [`Prepare`] code in the default loops).
 #[test]
 fn the_compensated_models_equal_the_scalar_path() {
     use lobe::bxdf::{CompensatedMicrofacet, Compensation};
@@ -403,6 +404,19 @@ fn the_compensated_models_equal_the_scalar_path() {
             .with_energy_compensation()
             .unwrap(),
     );
+    // The other masking terms take a table of one's own (here the height-correlated row:
+    // the loops, not the compensation's accuracy, are under test).
+    use lobe::tables::TabulatedAlbedo;
+    let row = Ggx::isotropic(a(0.6)).conductor_albedo().unwrap();
+    for masking in [Masking::Separable, Masking::VCavity] {
+        for compensation in [Compensation::KullaConty, Compensation::Turquin] {
+            let inner = Microfacet::new(Ggx::isotropic(a(0.6)), masking, Conductor { ior: gold });
+            check(
+                &format!("GGX gold {compensation:?}, {masking:?}"),
+                &CompensatedMicrofacet::with_albedo(inner, row, compensation),
+            );
+        }
+    }
     check(
         "GGX white compensated",
         &Microfacet::new(Ggx::isotropic(a(0.6)), hc, NoFresnel::<f32>::new())

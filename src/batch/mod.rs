@@ -46,11 +46,13 @@
 //! them in the GGX gold conductor's `eval` loop, a quarter of its time. The hot
 //! models' lane code has no library calls (sine and cosine are [`crate::math::sin_cos_turns`]);
 //! a lane that calls one (Beckmann's `erfc`, Phong's `powf`) still runs, one lane at a time.
-//! A microfacet model's loop takes its Fresnel term channel by channel
+//! A microfacet model's loops, and the energy-compensated microfacet model's `eval` loop,
+//! take the Fresnel term channel by channel
 //! ([`Fresnel::eval_per_channel`](crate::fresnel::Fresnel::eval_per_channel)): the exact
 //! conductor's scalar `eval` puts an RGB spectrum's channels side by side in one SIMD
 //! register, which a loop cannot widen across calls (the same numbers either way). The other
-//! models' loops run that scalar form, one call per lane.
+//! loops run that scalar form, one call per lane (where a loop does not vectorise, as the
+//! compensated model's `sample`, whose lanes pick one of two lobes, it is the faster form).
 //!
 //! **Run-time dispatch.** The default `x86_64` target has only SSE2, and a library cannot
 //! ask its users for `-C target-cpu=native`. On x86 and x86_64 each batched call asks the

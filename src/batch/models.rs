@@ -2,11 +2,12 @@
 
 use super::Batch;
 use crate::bxdf::{
-    BlinnPhong, DisneyDiffuse, EnergyPreservingOrenNayar, Glazed, Lambert, Microfacet, Mirror,
-    Mono, OrenNayar, Phong, Plastic, RoughDielectric, SmoothDielectric, ThinDielectric,
+    BlinnPhong, CompensatedMicrofacet, DisneyDiffuse, EnergyPreservingOrenNayar, Glazed, Lambert,
+    Microfacet, Mirror, Mono, OrenNayar, Phong, Plastic, RoughDielectric, SmoothDielectric,
+    ThinDielectric,
 };
 use crate::bxdf::{Bxdf, DiffuseTransmission, LayerInterface, Layered, Mix, Sheen, TwoSided};
-use crate::fresnel::Fresnel;
+use crate::fresnel::{Fresnel, FresnelAverage};
 use crate::microfacet::NormalDistribution;
 use crate::spectrum::Spectrum;
 
@@ -90,6 +91,8 @@ macro_rules! masked {
 masked!(impl<D: NormalDistribution, F: Fresnel> for Microfacet<D, F> =>
     eval_with::<true>, sample_with::<true>);
 masked!(impl<D: NormalDistribution> for RoughDielectric<D> => eval_with, sample_with);
+masked!(impl<D: NormalDistribution, F: FresnelAverage> for CompensatedMicrofacet<D, F> =>
+    eval_with::<true>, sample_with);
 
 /// A [`Masked`] model's lanes with the masking term `MASKINGS[K]`.
 struct FixedMasking<const K: usize>;
@@ -160,3 +163,5 @@ macro_rules! batch_by_masking {
 
 batch_by_masking!(impl<D: NormalDistribution + Clone, F: Fresnel> for Microfacet<D, F> where F::Spectrum);
 batch_by_masking!(impl<D: NormalDistribution + Clone> for RoughDielectric<D> where f32);
+batch_by_masking!(impl<D: NormalDistribution + Clone, F: FresnelAverage>
+    for CompensatedMicrofacet<D, F> where F::Spectrum);

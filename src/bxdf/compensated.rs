@@ -3,7 +3,7 @@
 
 use super::{At, BxdfSample, Lobes, Microfacet, Prepare, both_above, usable_pdf};
 use crate::fresnel::{Fresnel, FresnelAverage};
-use crate::microfacet::{NormalDistribution, View};
+use crate::microfacet::{Masking, NormalDistribution, View};
 use crate::param::ParamError;
 use crate::sampling::{cosine_hemisphere, cosine_hemisphere_pdf, reuse_uniform};
 use crate::spectrum::Spectrum;
@@ -222,6 +222,78 @@ impl<D: NormalDistribution, F: FresnelAverage> CompensatedMicrofacet<D, F> {
     fn lobe(&self, outgoing: F::Spectrum, wi: Vec3) -> F::Spectrum {
         outgoing * (1.0 - self.albedo.e(wi.z))
     }
+
+    /// The inner model's masking term (what a batched loop fixes outside the loop).
+    #[inline(always)]
+    pub(crate) fn masking(&self) -> Masking {
+        self.inner.masking()
+    }
+
+    /// [`Prepare::eval_prepared`] with the inner model's masking term `masking` and, for a
+    /// batched loop, its Fresnel term channel by channel (`PER_CHANNEL`: the same numbers;
+    /// see [`Microfacet`]'s `value`).
+    #[inline(always)]
+    pub(crate) fn eval_with<const PER_CHANNEL: bool>(
+        &self,
+        at: &CompensatedState<At<View>, F::Spectrum>,
+        wi: Vec3,
+        masking: Masking,
+    ) -> F::Spectrum {
+        let f = self.inner.eval_with::<PER_CHANNEL>(&at.inner, wi, masking);
+        match self.compensation {
+            Compensation::KullaConty if both_above(at.inner.wo, wi) => {
+                f + self.lobe(at.outgoing, wi)
+            }
+            Compensation::KullaConty => f,
+            Compensation::Turquin => f * at.outgoing,
+        }
+    }
+
+    /// [`Prepare::sample_prepared`] under `masking` (the batched loop, which does not
+    /// vectorise, keeps the Fresnel term's scalar form).
+    #[inline(always)]
+    pub(crate) fn sample_with(
+        &self,
+        at: &CompensatedState<At<View>, F::Spectrum>,
+        u: Vec2,
+        uc: f32,
+        masking: Masking,
+    ) -> Option<BxdfSample<F::Spectrum>> {
+        let inner = &self.inner;
+        if self.compensation == Compensation::Turquin {
+            let mut s = inner.sample_with::<false>(&at.inner, u, uc, masking)?;
+            s.f = s.f * at.outgoing;
+            return Some(s);
+        }
+        if !(at.inner.wo.z > 0.0) {
+            return None;
+        }
+        let p = at.probability;
+        // The single-scattering lobe's value and density at wi: from its own sample when it
+        // drew wi (the numbers its eval and pdf give), else evaluated together.
+        let (wi, f, pdf, lobe) = if uc < p {
+            let wi = cosine_hemisphere(u);
+            let (f, pdf) = inner.eval_pdf_with::<false>(&at.inner, wi, masking);
+            (wi, f, pdf, Lobes::DIFFUSE_REFLECTION)
+        } else {
+            let uc = reuse_uniform(uc, p, 1.0 - p);
+            let s = inner.sample_with::<false>(&at.inner, u, uc, masking)?;
+            (s.wi, s.f, s.pdf, s.lobe)
+        };
+        if !(wi.z > 0.0) {
+            return None;
+        }
+        let pdf = (1.0 - p) * pdf + p * cosine_hemisphere_pdf(wi.z);
+        if !usable_pdf(pdf) {
+            return None;
+        }
+        Some(BxdfSample::new(
+            wi,
+            f + self.lobe(at.outgoing, wi),
+            pdf,
+            lobe,
+        ))
+    }
 }
 
 impl<D: NormalDistribution, F: FresnelAverage> Prepare for CompensatedMicrofacet<D, F> {
@@ -254,14 +326,7 @@ impl<D: NormalDistribution, F: FresnelAverage> Prepare for CompensatedMicrofacet
 
     #[inline(always)]
     fn eval_prepared(&self, at: &Self::Prepared, wi: Vec3) -> F::Spectrum {
-        let f = self.inner.eval_prepared(&at.inner, wi);
-        match self.compensation {
-            Compensation::KullaConty if both_above(at.inner.wo, wi) => {
-                f + self.lobe(at.outgoing, wi)
-            }
-            Compensation::KullaConty => f,
-            Compensation::Turquin => f * at.outgoing,
-        }
+        self.eval_with::<false>(at, wi, self.inner.masking())
     }
 
     #[inline(always)]
@@ -296,39 +361,7 @@ impl<D: NormalDistribution, F: FresnelAverage> Prepare for CompensatedMicrofacet
         u: Vec2,
         uc: f32,
     ) -> Option<BxdfSample<F::Spectrum>> {
-        if self.compensation == Compensation::Turquin {
-            let mut s = self.inner.sample_prepared(&at.inner, u, uc)?;
-            s.f = s.f * at.outgoing;
-            return Some(s);
-        }
-        if !(at.inner.wo.z > 0.0) {
-            return None;
-        }
-        let p = at.probability;
-        // The single-scattering lobe's value and density at wi: from its own sample when it
-        // drew wi (the numbers its eval and pdf give), else evaluated together.
-        let (wi, f, pdf, lobe) = if uc < p {
-            let wi = cosine_hemisphere(u);
-            let (f, pdf) = self.inner.eval_pdf_prepared(&at.inner, wi);
-            (wi, f, pdf, Lobes::DIFFUSE_REFLECTION)
-        } else {
-            let uc = reuse_uniform(uc, p, 1.0 - p);
-            let s = self.inner.sample_prepared(&at.inner, u, uc)?;
-            (s.wi, s.f, s.pdf, s.lobe)
-        };
-        if !(wi.z > 0.0) {
-            return None;
-        }
-        let pdf = (1.0 - p) * pdf + p * cosine_hemisphere_pdf(wi.z);
-        if !usable_pdf(pdf) {
-            return None;
-        }
-        Some(BxdfSample::new(
-            wi,
-            f + self.lobe(at.outgoing, wi),
-            pdf,
-            lobe,
-        ))
+        self.sample_with(at, u, uc, self.inner.masking())
     }
 
     #[inline(always)]
