@@ -383,13 +383,14 @@ fn the_combinators_and_layered_models_equal_the_scalar_path() {
     check("Sheen", &Sheen::new(rgb, 0.4).unwrap());
 }
 
-/// The energy-compensated models: Kulla & Conty's lobe on a conductor (under each masking
-/// term: the compensated microfacet model takes the microfacet models' loops, one per term)
-/// and on a white microfacet, Turquin's scaling, the compensated glass in both transport
-/// modes and the compensated plastic (their [`Prepare`] code in the default loops).
+/// The energy-compensated models: Kulla & Conty's lobe on a conductor and on a white
+/// microfacet, Turquin's scaling, the compensated glass in both transport modes (the
+/// compensated microfacet model and glass take one loop per masking term, as the plain
+/// ones: each term is checked, with a table of one's own where the crate's is for another),
+/// and the compensated plastic.
 #[test]
 fn the_compensated_models_equal_the_scalar_path() {
-    use lobe::bxdf::{CompensatedMicrofacet, Compensation};
+    use lobe::bxdf::{CompensatedDielectric, CompensatedMicrofacet, Compensation};
     use lobe::fresnel::NoFresnel;
     let hc = Masking::HeightCorrelated;
     let glass = Eta::new(1.5).unwrap();
@@ -406,7 +407,7 @@ fn the_compensated_models_equal_the_scalar_path() {
     );
     // The other masking terms take a table of one's own (here the height-correlated row:
     // the loops, not the compensation's accuracy, are under test).
-    use lobe::tables::TabulatedAlbedo;
+    use lobe::tables::{TabulatedAlbedo, TabulatedDielectric};
     let row = Ggx::isotropic(a(0.6)).conductor_albedo().unwrap();
     for masking in [Masking::Separable, Masking::VCavity] {
         for compensation in [Compensation::KullaConty, Compensation::Turquin] {
@@ -435,14 +436,19 @@ fn the_compensated_models_equal_the_scalar_path() {
         )
         .unwrap(),
     );
+    let glass_row = Ggx::isotropic(a(0.4)).dielectric_albedo(glass).unwrap();
     for mode in [TransportMode::Radiance, TransportMode::Importance] {
+        let interface = RoughDielectric::new(Ggx::isotropic(a(0.4)), glass).with_mode(mode);
         check(
             &format!("rough glass compensated, {mode:?}"),
-            &RoughDielectric::new(Ggx::isotropic(a(0.4)), glass)
-                .with_mode(mode)
-                .with_energy_compensation()
-                .unwrap(),
+            &interface.with_energy_compensation().unwrap(),
         );
+        for masking in [Masking::Separable, Masking::VCavity] {
+            check(
+                &format!("rough glass compensated, {mode:?}, {masking:?}"),
+                &CompensatedDielectric::with_albedo(interface.with_masking(masking), glass_row),
+            );
+        }
     }
     check(
         "plastic compensated",

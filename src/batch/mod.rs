@@ -46,8 +46,9 @@
 //! them in the GGX gold conductor's `eval` loop, a quarter of its time. The hot
 //! models' lane code has no library calls (sine and cosine are [`crate::math::sin_cos_turns`]);
 //! a lane that calls one (Beckmann's `erfc`, Phong's `powf`) still runs, one lane at a time.
-//! A microfacet model's loops, and the energy-compensated microfacet model's `eval` loop,
-//! take the Fresnel term channel by channel
+//! The microfacet models (plain and energy-compensated, reflecting and refracting) have one
+//! loop per masking term. A microfacet model's loops, and the energy-compensated microfacet
+//! model's `eval` loop, take the Fresnel term channel by channel
 //! ([`Fresnel::eval_per_channel`](crate::fresnel::Fresnel::eval_per_channel)): the exact
 //! conductor's scalar `eval` puts an RGB spectrum's channels side by side in one SIMD
 //! register, which a loop cannot widen across calls (the same numbers either way). The other
@@ -67,7 +68,6 @@
 //! **Lengths.** Every slice of a call must have the same length; otherwise the call writes
 //! nothing and returns [`LengthError`]. It never panics.
 
-mod compensated;
 mod kernel;
 mod lanes;
 mod models;

@@ -2,9 +2,9 @@
 
 use super::Batch;
 use crate::bxdf::{
-    BlinnPhong, CompensatedMicrofacet, DisneyDiffuse, EnergyPreservingOrenNayar, Glazed, Lambert,
-    Microfacet, Mirror, Mono, OrenNayar, Phong, Plastic, RoughDielectric, SmoothDielectric,
-    ThinDielectric,
+    BlinnPhong, CompensatedDielectric, CompensatedMicrofacet, DisneyDiffuse,
+    EnergyPreservingOrenNayar, Glazed, Lambert, Microfacet, Mirror, Mono, OrenNayar, Phong,
+    Plastic, RoughDielectric, SmoothDielectric, ThinDielectric,
 };
 use crate::bxdf::{Bxdf, DiffuseTransmission, LayerInterface, Layered, Mix, Sheen, TwoSided};
 use crate::fresnel::{Fresnel, FresnelAverage};
@@ -93,6 +93,7 @@ masked!(impl<D: NormalDistribution, F: Fresnel> for Microfacet<D, F> =>
 masked!(impl<D: NormalDistribution> for RoughDielectric<D> => eval_with, sample_with);
 masked!(impl<D: NormalDistribution, F: FresnelAverage> for CompensatedMicrofacet<D, F> =>
     eval_with::<true>, sample_with);
+masked!(impl<D: NormalDistribution> for CompensatedDielectric<D> => eval_with, sample_with);
 
 /// A [`Masked`] model's lanes with the masking term `MASKINGS[K]`.
 struct FixedMasking<const K: usize>;
@@ -165,3 +166,4 @@ batch_by_masking!(impl<D: NormalDistribution + Clone, F: Fresnel> for Microfacet
 batch_by_masking!(impl<D: NormalDistribution + Clone> for RoughDielectric<D> where f32);
 batch_by_masking!(impl<D: NormalDistribution + Clone, F: FresnelAverage>
     for CompensatedMicrofacet<D, F> where F::Spectrum);
+batch_by_masking!(impl<D: NormalDistribution + Clone> for CompensatedDielectric<D> where f32);

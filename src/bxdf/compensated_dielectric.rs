@@ -3,7 +3,7 @@
 use super::compensated::CompensatedState;
 use super::{At, BxdfSample, Lobes, Prepare, RoughDielectric, TransportMode, usable_pdf};
 use crate::fresnel::{Dielectric, FresnelAverage};
-use crate::microfacet::{NormalDistribution, View};
+use crate::microfacet::{Masking, NormalDistribution, View};
 use crate::param::ParamError;
 use crate::sampling::{cosine_hemisphere, reuse_uniform};
 use crate::tables::{AlbedoRow, DielectricAlbedo, TabulatedDielectric};
@@ -251,6 +251,79 @@ impl<D: NormalDistribution> CompensatedDielectric<D> {
     }
 }
 
+impl<D: NormalDistribution> CompensatedDielectric<D> {
+    /// The interface's masking term (what a batched loop fixes outside the loop).
+    #[inline(always)]
+    pub(crate) fn masking(&self) -> Masking {
+        self.inner.masking()
+    }
+
+    /// [`Prepare::eval_prepared`] under the interface's masking term `masking`.
+    #[inline(always)]
+    pub(crate) fn eval_with(
+        &self,
+        at: &CompensatedState<At<View>, f32>,
+        wi: Vec3,
+        masking: Masking,
+    ) -> f32 {
+        let f = self.inner.eval_with(&at.inner, wi, masking);
+        f + self
+            .lobes_at(at.inner.wo, at.outgoing, at.probability, wi)
+            .0
+    }
+
+    /// [`Prepare::sample_prepared`] under the interface's masking term `masking`.
+    #[inline(always)]
+    pub(crate) fn sample_with(
+        &self,
+        at: &CompensatedState<At<View>, f32>,
+        u: Vec2,
+        uc: f32,
+        masking: Masking,
+    ) -> Option<BxdfSample<f32>> {
+        let wo = at.inner.wo;
+        if wo.z == 0.0 {
+            return None;
+        }
+        let p = at.probability;
+        let (wi, f, pdf, lobe, eta) = if uc < p {
+            let (side, _, _) = self.side(wo.z > 0.0);
+            let transmit = uc < p * side.transmitted;
+            let mut wi = cosine_hemisphere(u);
+            // Same side as wo for reflection, the other for transmission.
+            if (wo.z > 0.0) == transmit {
+                wi.z = -wi.z;
+            }
+            let (f, pdf) = self.inner.eval_pdf_with(&at.inner, wi, masking);
+            let (lobe, eta) = if transmit {
+                (
+                    Lobes::DIFFUSE | Lobes::TRANSMISSION,
+                    self.inner.eta().seen_from(wo.z),
+                )
+            } else {
+                (Lobes::DIFFUSE_REFLECTION, 1.0)
+            };
+            (wi, f, pdf, lobe, eta)
+        } else {
+            let uc = reuse_uniform(uc, p, 1.0 - p);
+            let s = self.inner.sample_with(&at.inner, u, uc, masking)?;
+            (s.wi, s.f, s.pdf, s.lobe, s.eta)
+        };
+        let (f_ms, pdf_ms) = self.lobes_at(wo, at.outgoing, p, wi);
+        let pdf = (1.0 - p) * pdf + pdf_ms;
+        if !usable_pdf(pdf) {
+            return None;
+        }
+        Some(BxdfSample {
+            wi,
+            f: f + f_ms,
+            pdf,
+            lobe,
+            eta,
+        })
+    }
+}
+
 impl<D: NormalDistribution> Prepare for CompensatedDielectric<D> {
     type Spectrum = f32;
     type Prepared = CompensatedState<At<View>, f32>;
@@ -273,10 +346,7 @@ impl<D: NormalDistribution> Prepare for CompensatedDielectric<D> {
 
     #[inline(always)]
     fn eval_prepared(&self, at: &Self::Prepared, wi: Vec3) -> f32 {
-        let f = self.inner.eval_prepared(&at.inner, wi);
-        f + self
-            .lobes_at(at.inner.wo, at.outgoing, at.probability, wi)
-            .0
+        self.eval_with(at, wi, self.inner.masking())
     }
 
     #[inline(always)]
@@ -297,46 +367,7 @@ impl<D: NormalDistribution> Prepare for CompensatedDielectric<D> {
 
     #[inline(always)]
     fn sample_prepared(&self, at: &Self::Prepared, u: Vec2, uc: f32) -> Option<BxdfSample<f32>> {
-        let wo = at.inner.wo;
-        if wo.z == 0.0 {
-            return None;
-        }
-        let p = at.probability;
-        let (wi, f, pdf, lobe, eta) = if uc < p {
-            let (side, _, _) = self.side(wo.z > 0.0);
-            let transmit = uc < p * side.transmitted;
-            let mut wi = cosine_hemisphere(u);
-            // Same side as wo for reflection, the other for transmission.
-            if (wo.z > 0.0) == transmit {
-                wi.z = -wi.z;
-            }
-            let (f, pdf) = self.inner.eval_pdf_prepared(&at.inner, wi);
-            let (lobe, eta) = if transmit {
-                (
-                    Lobes::DIFFUSE | Lobes::TRANSMISSION,
-                    self.inner.eta().seen_from(wo.z),
-                )
-            } else {
-                (Lobes::DIFFUSE_REFLECTION, 1.0)
-            };
-            (wi, f, pdf, lobe, eta)
-        } else {
-            let uc = reuse_uniform(uc, p, 1.0 - p);
-            let s = self.inner.sample_prepared(&at.inner, u, uc)?;
-            (s.wi, s.f, s.pdf, s.lobe, s.eta)
-        };
-        let (f_ms, pdf_ms) = self.lobes_at(wo, at.outgoing, p, wi);
-        let pdf = (1.0 - p) * pdf + pdf_ms;
-        if !usable_pdf(pdf) {
-            return None;
-        }
-        Some(BxdfSample {
-            wi,
-            f: f + f_ms,
-            pdf,
-            lobe,
-            eta,
-        })
+        self.sample_with(at, u, uc, self.inner.masking())
     }
 
     #[inline(always)]
