@@ -5,11 +5,13 @@
 //! batch-timing time FILE      # times lobe's batched GGX gold conductor on them; prints ns per lane
 //! ```
 //!
-//! Besides the model's three calls it times two parts of the work on the same lanes, which
-//! the script times on Mitsuba's side too: the exact conductor Fresnel term alone (gold, RGB,
-//! at `cos θ = wo.z`), and a chain of twelve divisions `z ← y/z + 1` (`y = 1 + wi.z`, from
-//! `z = 1 + wo.z`), which shows what one division costs each side. Both loops are compiled for
-//! the widest instruction set the CPU has, by the same run-time dispatch as `lobe::batch`.
+//! Besides the model's three calls it times, on the same lanes, a memory pass (`wo + wi`: the
+//! floor) and three parts of the work, which the script times on Mitsuba's side too: the
+//! exact conductor Fresnel term alone (gold, RGB, at `cos θ = wo.z`), a chain of twelve
+//! divisions `z ← y/z + 1` and a chain of twelve square roots `z ← √(z + y)` (`y = 1 + wi.z`,
+//! from `z = 1 + wo.z`), which show what one division and one square root cost each side.
+//! These loops are compiled for the widest instruction set the CPU has, by the same run-time
+//! dispatch as `lobe::batch`.
 //!
 //! The model is Mitsuba's `roughconductor` with `distribution = ggx`, `alpha = 0.3`,
 //! `material = Au`, `sample_visible = true`: the GGX conductor with gold's complex index and
@@ -85,9 +87,14 @@ impl pulp::WithSimd for FresnelLanes<'_> {
 
     #[inline(always)]
     fn with_simd<S: pulp::Simd>(self, _simd: S) {
-        let [r, g, b] = self.out;
+        // Outputs re-sliced to the inputs' length (no bounds checks in the loop), and the
+        // term copied out of the reference (its parameters then stay in registers), as the
+        // batched loops do.
+        let n = self.cos.len();
+        let [r, g, b] = self.out.map(|o| &mut o[..n]);
+        let fresnel = *self.fresnel;
         for (k, &c) in self.cos.iter().enumerate() {
-            let f = self.fresnel.eval_per_channel(c);
+            let f = fresnel.eval_per_channel(c);
             (r[k], g[k], b[k]) = (f.x, f.y, f.z);
         }
     }
@@ -184,9 +191,18 @@ fn main() {
                     f: |x: f32, y: f32| (0..12).fold(x, |z, _| y / z + 1.0),
                 });
             }) / 12.0;
+            // Twelve dependent square roots per lane: z ← √(z + y), from z = x.
+            let root = time(n, || {
+                arch.dispatch(PerLane {
+                    x: &x,
+                    y: &y,
+                    out: &mut *a,
+                    f: |x: f32, y: f32| (0..12).fold(x, |z, _| (z + y).sqrt()),
+                });
+            }) / 12.0;
             black_box(&o);
             println!(
-                "{{\"eval\": {eval}, \"pdf\": {pdf}, \"sample\": {sample}, \"copy\": {copy}, \"fresnel\": {fresnel_alone}, \"divide\": {divide}}}"
+                "{{\"eval\": {eval}, \"pdf\": {pdf}, \"sample\": {sample}, \"copy\": {copy}, \"fresnel\": {fresnel_alone}, \"divide\": {divide}, \"root\": {root}}}"
             );
         }
         _ => eprintln!("usage: batch-timing write FILE N | batch-timing time FILE"),

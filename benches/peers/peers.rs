@@ -3,7 +3,8 @@
 //! ratios. (Mitsuba 3, which needs Python and LLVM: `benches/peers/vs_mitsuba.py`.)
 //!
 //! Then lobe alone, scalar against batched, where the peer has no model: the GGX rough
-//! dielectric (η 1.5, the sides mixed as in the shading benchmarks).
+//! dielectric (η 1.5, the sides mixed as in the shading benchmarks), and the
+//! energy-compensated GGX gold conductor and rough glass (Kulla & Conty's lobe on top).
 //!
 //! Last, the ceiling of batching for work bound by the divider: one square root and one
 //! division per element, scalar (measured as lobe's scalar calls are) against the same loop
@@ -28,9 +29,9 @@ use interleave::{Kernel, ratio, rounds, spread};
 use lanes::PerLane;
 use lobe::batch::{Batch, Lanes, SampleOut, Vec2s, Vec3s, Vec3sMut};
 use lobe::bxdf::{Bxdf, Lambert, Microfacet, RoughDielectric};
-use lobe::fresnel::Schlick;
+use lobe::fresnel::{Conductor as ExactConductor, Schlick};
 use lobe::microfacet::{Ggx, Masking};
-use lobe::{Alpha, Eta, Vec3};
+use lobe::{Alpha, ComplexIor, Eta, Vec3};
 use std::hint::black_box;
 use std::time::Duration;
 
@@ -311,6 +312,30 @@ fn main() {
     let lobe_g = lobe_kernels("GGX rough glass η 1.5, sides mixed", &glass, &mixed);
     let batch_g = batch_kernels("GGX rough glass η 1.5, sides mixed", &glass, &mixed_soa);
     for (a, b) in lobe_g.into_iter().zip(batch_g) {
+        pairs.push([a, b]);
+    }
+    let gold = ComplexIor::new(
+        Vec3::new(0.143, 0.375, 1.442),
+        Vec3::new(3.983, 2.386, 1.603),
+    )
+    .unwrap();
+    let compensated_gold = Microfacet::new(
+        Ggx::isotropic(Alpha::new(ALPHA).unwrap()),
+        Masking::HeightCorrelated,
+        ExactConductor { ior: gold },
+    )
+    .with_energy_compensation()
+    .unwrap();
+    let lobe_cg = lobe_kernels("compensated GGX gold", &compensated_gold, &inputs);
+    let batch_cg = batch_kernels("compensated GGX gold", &compensated_gold, &soa);
+    for (a, b) in lobe_cg.into_iter().zip(batch_cg) {
+        pairs.push([a, b]);
+    }
+    let compensated_glass = glass.with_energy_compensation().unwrap();
+    let name = "compensated GGX rough glass η 1.5, sides mixed";
+    let lobe_cd = lobe_kernels(name, &compensated_glass, &mixed);
+    let batch_cd = batch_kernels(name, &compensated_glass, &mixed_soa);
+    for (a, b) in lobe_cd.into_iter().zip(batch_cd) {
         pairs.push([a, b]);
     }
     pairs.push(divider_kernels(&inputs));

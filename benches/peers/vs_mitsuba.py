@@ -17,8 +17,10 @@ spectral data converted to RGB by Mitsuba), visible-normal sampling without the 
 does the work its API asks for.
 
 Timing: Dr.Jit on one thread (`dr.set_thread_count(1)`), each kernel compiled by a first
-call (not timed), then five timed launches; lobe's batched calls (no fast-math, no warm-up
-other than one untimed pass) in `batch-timing`, also five passes. The two sides alternate in
+call (not timed), then five timed launches; lobe's batched calls (rustc's IEEE arithmetic,
+no contraction or reassociation; no warm-up other than one untimed pass) in `batch-timing`,
+also five passes. Whether Dr.Jit approximates divisions or square roots is not assumed: the
+two chain rows measure it. The two sides alternate in
 rounds (lobe, Mitsuba, lobe, Mitsuba, ...) and the table gives medians over rounds with their
 spread, and the median of the per-round ratios.
 """
@@ -119,10 +121,11 @@ def time_mitsuba(c):
     def copy():
         return wo + wi
 
-    # The two parts batch-timing also times: the exact conductor term alone (lobe's gold, RGB,
-    # one complex index per channel as Mitsuba's RGB variant holds it, at cos = wo.z), and a
-    # chain of twelve divisions, which shows whether the JIT divides exactly (at the exact
-    # division's throughput) or by an approximate reciprocal.
+    # The parts batch-timing also times: the exact conductor term alone (lobe's gold, RGB,
+    # one complex index per channel as Mitsuba's RGB variant holds it, at cos = wo.z), and
+    # chains of twelve divisions and of twelve square roots, which show whether the JIT
+    # divides and takes roots exactly (at the exact instructions' throughput) or by
+    # approximations.
     gold = [(0.143, 3.983), (0.375, 2.386), (1.442, 1.603)]
 
     def fresnel():
@@ -140,9 +143,16 @@ def time_mitsuba(c):
             z = y / z + 1.0
         return z
 
+    def root():
+        z = x
+        for _ in range(12):
+            z = dr.sqrt(z + y)
+        return z
+
     return {
         "fresnel": median_launch(fresnel, n),
         "divide": median_launch(divide, n) / 12,
+        "root": median_launch(root, n) / 12,
         "eval": median_launch(lambda: bsdf.eval(ctx, si, wi), n),
         "pdf": median_launch(lambda: bsdf.pdf(ctx, si, wi), n),
         "sample": median_launch(sample, n),
@@ -169,8 +179,9 @@ def main():
         "copy": "memory pass (wo + wi)",
         "fresnel": "conductor Fresnel alone (RGB)",
         "divide": "one division (of a chain of 12)",
+        "root": "one square root (of a chain of 12)",
     }
-    for k in ["eval", "pdf", "sample", "copy", "fresnel", "divide"]:
+    for k in ["eval", "pdf", "sample", "copy", "fresnel", "divide", "root"]:
         lo = [r[0][k] for r in rounds]
         mi_ = [r[1][k] for r in rounds]
         ra = [a / b for a, b in zip(lo, mi_)]

@@ -44,7 +44,7 @@ pub(crate) fn dispatch<K: Kernel>(kernel: K) {
 }
 
 /// How one lane is computed.
-pub(crate) trait LaneOp<M: Prepare + ?Sized> {
+pub(crate) trait LaneOp<M: Prepare> {
     /// `eval(wo, wi)`.
     fn eval(m: &M, wo: Vec3, wi: Vec3) -> M::Spectrum;
     /// `pdf(wo, wi)`.
@@ -56,7 +56,7 @@ pub(crate) trait LaneOp<M: Prepare + ?Sized> {
 /// The model's own prepared calls.
 pub(crate) struct Plain;
 
-impl<M: Prepare + ?Sized> LaneOp<M> for Plain {
+impl<M: Prepare> LaneOp<M> for Plain {
     #[inline(always)]
     fn eval(m: &M, wo: Vec3, wi: Vec3) -> M::Spectrum {
         m.eval_prepared(&m.prepare(wo), wi)
@@ -74,7 +74,7 @@ impl<M: Prepare + ?Sized> LaneOp<M> for Plain {
 }
 
 /// `f[k] = eval(wo[k], wi[k])` over the first `n` lanes (every slice has at least `n`).
-pub(crate) struct EvalKernel<'a, 'f, M: Prepare + ?Sized, O>
+pub(crate) struct EvalKernel<'a, 'f, M: Prepare, O>
 where
     M::Spectrum: Lanes,
 {
@@ -113,7 +113,7 @@ where
 }
 
 /// `pdf[k] = pdf(wo[k], wi[k])` over the first `n` lanes.
-pub(crate) struct PdfKernel<'a, 'f, M: ?Sized, O> {
+pub(crate) struct PdfKernel<'a, 'f, M, O> {
     pub(super) m: &'a M,
     pub(super) wo: Vec3s<'a>,
     pub(super) wi: Vec3s<'a>,
@@ -136,7 +136,7 @@ impl<M: Prepare + Clone, O: LaneOp<M>> Kernel for PdfKernel<'_, '_, M, O> {
 
 /// `(wi, f, pdf)[k] = sample(wo[k], u[k], uc[k])` over the first `n` lanes, zeros for no
 /// sample.
-pub(crate) struct SampleKernel<'a, 'f, M: Prepare + ?Sized, O>
+pub(crate) struct SampleKernel<'a, 'f, M: Prepare, O>
 where
     M::Spectrum: Lanes,
 {

@@ -24,7 +24,7 @@ impl<S: Spectrum + Lanes> Batch for DisneyDiffuse<S> {}
 impl<S: Spectrum + Lanes> Batch for Phong<S> {}
 impl<S: Spectrum + Lanes> Batch for BlinnPhong<S> {}
 impl<S: Spectrum + Lanes> Batch for Glazed<S> {}
-impl<D: Clone, S: Spectrum + Lanes, C: Prepare<Spectrum = f32> + Clone> Batch for Plastic<D, S, C> {}
+impl<D, S: Spectrum + Lanes, C: Prepare<Spectrum = f32> + Clone> Batch for Plastic<D, S, C> {}
 impl<F: Fresnel> Batch for Mirror<F> where F::Spectrum: Lanes {}
 impl Batch for SmoothDielectric {}
 impl<B: Prepare<Spectrum = f32> + Clone, S: Spectrum + Lanes> Batch for Mono<B, S> {}

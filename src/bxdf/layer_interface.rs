@@ -19,7 +19,9 @@ use crate::param::Eta;
 ///
 /// Implemented for [`RoughDielectric`], [`SmoothDielectric`] and [`CompensatedDielectric`]
 /// (a rough coat that keeps the energy its microfacets scatter more than once: the stack's
-/// white furnace then holds to the compensated interface's own accuracy).
+/// white furnace then holds to the compensated interface's own accuracy). An interface of
+/// your own should be `Clone`, so that [`Layered`](super::Layered) runs batched
+/// ([`Batch`](crate::batch::Batch)).
 pub trait LayerInterface: Prepare<Spectrum = f32> + Sized {
     /// The relative index of refraction `η = η_inside / η_outside`.
     #[must_use]

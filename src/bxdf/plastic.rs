@@ -50,7 +50,7 @@ const MARGIN: f32 = 1e-3;
 /// albedo; [`crate::tables`]) without a margin, so the white furnace with `ρ = 1` is 1 to
 /// the tables' interpolation error: measured from 0.9996 to 1.0013 (GGX, `η` 1.33 to 2,
 /// `α` 0.05 to 1, `θo` up to 85°; `tests/energy_compensation.rs`).
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Debug, PartialEq)]
 pub struct Plastic<D, S = f32, C = Microfacet<D, Dielectric>> {
     coat: C,
     reflectance: S,
@@ -60,6 +60,23 @@ pub struct Plastic<D, S = f32, C = Microfacet<D, Dielectric>> {
     diffuse_scale: f32,
     distribution: PhantomData<D>,
 }
+
+// Written out rather than derived: a derive would ask `D: Clone` for the `PhantomData` alone;
+// the coat `C`, which holds the distribution, says whether it can be cloned.
+impl<D, S: Clone, C: Clone> Clone for Plastic<D, S, C> {
+    #[inline]
+    fn clone(&self) -> Self {
+        Self {
+            coat: self.coat.clone(),
+            reflectance: self.reflectance.clone(),
+            coat_albedo: self.coat_albedo,
+            diffuse_scale: self.diffuse_scale,
+            distribution: PhantomData,
+        }
+    }
+}
+
+impl<D, S: Copy, C: Copy> Copy for Plastic<D, S, C> {}
 
 impl<D: NormalDistribution, S: Spectrum> Plastic<D, S> {
     /// A plastic with base reflectance `ρ ∈ [0, 1]` under a coat of relative index `eta`

@@ -109,7 +109,8 @@ impl View {
 /// follows, and the crate's models ([`Microfacet`](crate::bxdf::Microfacet),
 /// [`RoughDielectric`](crate::bxdf::RoughDielectric), [`Plastic`](crate::bxdf::Plastic)) are
 /// then correct and fast for it: they prepare a [`View`] of `wo` once and evaluate `D` once
-/// per direction.
+/// per direction. Derive `Clone` (and `Copy`, if it holds only numbers) as well: the models'
+/// batched calls ([`Batch`](crate::batch::Batch)) clone the model, distribution included.
 ///
 /// **The prepared view.** Everything that depends on the direction alone (`Λ(w)`,
 /// the visible-normal factor, the sampler's set-up) is computed once by [`view`](Self::view)
@@ -125,6 +126,7 @@ impl View {
 /// use lobe::sampling::cosine_hemisphere;
 /// use lobe::{Vec2, Vec3};
 ///
+/// #[derive(Clone, Copy)] // `Clone` lets the models built on it run batched (`lobe::batch`)
 /// struct Uniform;
 ///
 /// impl NormalDistribution for Uniform {
