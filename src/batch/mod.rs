@@ -48,12 +48,16 @@
 //! a lane that calls one (Beckmann's `erfc`, Phong's `powf`) still runs, one lane at a time.
 //! The microfacet models (plain and energy-compensated, reflecting and refracting) have one
 //! loop per masking term. A microfacet model's loops, and the energy-compensated microfacet
-//! model's `eval` loop, take the Fresnel term channel by channel
+//! model's, take the Fresnel term channel by channel
 //! ([`Fresnel::eval_per_channel`](crate::fresnel::Fresnel::eval_per_channel)): the exact
 //! conductor's scalar `eval` puts an RGB spectrum's channels side by side in one SIMD
 //! register, which a loop cannot widen across calls (the same numbers either way). The other
-//! loops run that scalar form, one call per lane (where a loop does not vectorise, as the
-//! compensated model's `sample`, whose lanes pick one of two lobes, it is the faster form).
+//! loops run that scalar form, one call per lane. A model whose `sample` picks one of two
+//! lobes per lane branches between them; the energy-compensated microfacet model's batched
+//! `sample` instead draws both lobes' directions in every lane and keeps the one the lane
+//! picks, which vectorises (the same numbers: each lobe's value and density come from the
+//! same calls). The compensated glass's and the plastic's batched `sample` still branch
+//! between lobes.
 //!
 //! **Run-time dispatch.** The default `x86_64` target has only SSE2, and a library cannot
 //! ask its users for `-C target-cpu=native`. On x86 and x86_64 each batched call asks the

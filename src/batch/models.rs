@@ -92,7 +92,7 @@ masked!(impl<D: NormalDistribution, F: Fresnel> for Microfacet<D, F> =>
     eval_with::<true>, sample_with::<true>);
 masked!(impl<D: NormalDistribution> for RoughDielectric<D> => eval_with, sample_with);
 masked!(impl<D: NormalDistribution, F: FresnelAverage> for CompensatedMicrofacet<D, F> =>
-    eval_with::<true>, sample_with);
+    eval_with::<true>, sample_with::<true>);
 masked!(impl<D: NormalDistribution> for CompensatedDielectric<D> => eval_with, sample_with);
 
 /// A [`Masked`] model's lanes with the masking term `MASKINGS[K]`.

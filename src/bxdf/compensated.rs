@@ -249,10 +249,13 @@ impl<D: NormalDistribution, F: FresnelAverage> CompensatedMicrofacet<D, F> {
         }
     }
 
-    /// [`Prepare::sample_prepared`] under `masking` (the batched loop, which does not
-    /// vectorise, keeps the Fresnel term's scalar form).
+    /// [`Prepare::sample_prepared`] under `masking`. `LANES` is the form for a batched loop:
+    /// every lane draws both lobes' directions and keeps the one its `uc` picks, so that the
+    /// loop has no branch between lobes and vectorises, and the Fresnel term is taken channel
+    /// by channel. The same numbers as the scalar form: the single-scattering lobe's `sample`
+    /// is its `eval_pdf` at the direction it draws, refused where that density is unusable.
     #[inline(always)]
-    pub(crate) fn sample_with(
+    pub(crate) fn sample_with<const LANES: bool>(
         &self,
         at: &CompensatedState<At<View>, F::Spectrum>,
         u: Vec2,
@@ -261,7 +264,7 @@ impl<D: NormalDistribution, F: FresnelAverage> CompensatedMicrofacet<D, F> {
     ) -> Option<BxdfSample<F::Spectrum>> {
         let inner = &self.inner;
         if self.compensation == Compensation::Turquin {
-            let mut s = inner.sample_with::<false>(&at.inner, u, uc, masking)?;
+            let mut s = inner.sample_with::<LANES>(&at.inner, u, uc, masking)?;
             s.f = s.f * at.outgoing;
             return Some(s);
         }
@@ -269,9 +272,23 @@ impl<D: NormalDistribution, F: FresnelAverage> CompensatedMicrofacet<D, F> {
             return None;
         }
         let p = at.probability;
+        let diffuse = uc < p;
         // The single-scattering lobe's value and density at wi: from its own sample when it
         // drew wi (the numbers its eval and pdf give), else evaluated together.
-        let (wi, f, pdf, lobe) = if uc < p {
+        let (wi, f, pdf, lobe) = if LANES {
+            let (cosine, reflected) = (cosine_hemisphere(u), inner.sample_direction(&at.inner, u));
+            let wi = if diffuse { cosine } else { reflected };
+            let (f, pdf) = inner.eval_pdf_with::<true>(&at.inner, wi, masking);
+            if !diffuse && !usable_pdf(pdf) {
+                return None;
+            }
+            let lobe = if diffuse {
+                Lobes::DIFFUSE_REFLECTION
+            } else {
+                Lobes::GLOSSY_REFLECTION
+            };
+            (wi, f, pdf, lobe)
+        } else if diffuse {
             let wi = cosine_hemisphere(u);
             let (f, pdf) = inner.eval_pdf_with::<false>(&at.inner, wi, masking);
             (wi, f, pdf, Lobes::DIFFUSE_REFLECTION)
@@ -361,7 +378,7 @@ impl<D: NormalDistribution, F: FresnelAverage> Prepare for CompensatedMicrofacet
         u: Vec2,
         uc: f32,
     ) -> Option<BxdfSample<F::Spectrum>> {
-        self.sample_with(at, u, uc, self.inner.masking())
+        self.sample_with::<false>(at, u, uc, self.inner.masking())
     }
 
     #[inline(always)]

@@ -172,6 +172,13 @@ impl<D: NormalDistribution, F: Fresnel> Microfacet<D, F> {
         }
     }
 
+    /// The direction [`sample_with`](Self::sample_with) draws for `u`: `wo` reflected about
+    /// a normal drawn from the distribution (below the surface where the sample is refused).
+    #[inline(always)]
+    pub(crate) fn sample_direction(&self, at: &At<View>, u: Vec2) -> Vec3 {
+        reflect_away(at.wo, self.distribution.sample_reflection(&at.state, u))
+    }
+
     /// [`Prepare::sample_prepared`] under `masking`.
     #[inline(always)]
     pub(crate) fn sample_with<const PER_CHANNEL: bool>(
@@ -184,8 +191,7 @@ impl<D: NormalDistribution, F: Fresnel> Microfacet<D, F> {
         if !(at.wo.z > 0.0) {
             return None;
         }
-        let m = self.distribution.sample_reflection(&at.state, u);
-        let wi = reflect_away(at.wo, m);
+        let wi = self.sample_direction(at, u);
         // Evaluate at wo + wi, as `eval` and `pdf` do, rather than at `m`: the two differ by
         // rounding, and a renderer's MIS needs `pdf` to reproduce the sample's density
         // exactly. D once, for both the value and the density.
