@@ -4,7 +4,8 @@
 //!
 //! Then lobe alone, scalar against batched, where the peer has no model: the GGX rough
 //! dielectric (η 1.5, the sides mixed as in the shading benchmarks), and the
-//! energy-compensated GGX gold conductor and rough glass (Kulla & Conty's lobe on top).
+//! energy-compensated GGX gold conductor and rough glass (Kulla & Conty's lobe on top), and
+//! the GGX plastic.
 //!
 //! Last, the ceiling of batching for work bound by the divider: one square root and one
 //! division per element, scalar (measured as lobe's scalar calls are) against the same loop
@@ -28,7 +29,7 @@ use inputs::{Inputs, N, inputs, two_sided};
 use interleave::{Kernel, ratio, rounds, spread};
 use lanes::PerLane;
 use lobe::batch::{Batch, Lanes, SampleOut, Vec2s, Vec3s, Vec3sMut};
-use lobe::bxdf::{Bxdf, Lambert, Microfacet, RoughDielectric};
+use lobe::bxdf::{Bxdf, Lambert, Microfacet, Plastic, RoughDielectric};
 use lobe::fresnel::{Conductor as ExactConductor, Schlick};
 use lobe::microfacet::{Ggx, Masking};
 use lobe::{Alpha, ComplexIor, Eta, Vec3};
@@ -336,6 +337,17 @@ fn main() {
     let lobe_cd = lobe_kernels(name, &compensated_glass, &mixed);
     let batch_cd = batch_kernels(name, &compensated_glass, &mixed_soa);
     for (a, b) in lobe_cd.into_iter().zip(batch_cd) {
+        pairs.push([a, b]);
+    }
+    let plastic = Plastic::new(
+        Vec3::new(0.8, 0.6, 0.4),
+        Ggx::isotropic(Alpha::new(ALPHA).unwrap()),
+        Eta::new(1.5).unwrap(),
+    )
+    .unwrap();
+    let lobe_p = lobe_kernels("GGX plastic RGB", &plastic, &inputs);
+    let batch_p = batch_kernels("GGX plastic RGB", &plastic, &soa);
+    for (a, b) in lobe_p.into_iter().zip(batch_p) {
         pairs.push([a, b]);
     }
     pairs.push(divider_kernels(&inputs));

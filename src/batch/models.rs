@@ -1,20 +1,22 @@
 //! Every model's [`Batch`] implementation.
 
 use super::Batch;
+use crate::bxdf::CoatCalls;
 use crate::bxdf::{
     BlinnPhong, CompensatedDielectric, CompensatedMicrofacet, DisneyDiffuse,
     EnergyPreservingOrenNayar, Glazed, Lambert, Microfacet, Mirror, Mono, OrenNayar, Phong,
     Plastic, RoughDielectric, SmoothDielectric, ThinDielectric,
 };
 use crate::bxdf::{Bxdf, DiffuseTransmission, LayerInterface, Layered, Mix, Sheen, TwoSided};
-use crate::fresnel::{Fresnel, FresnelAverage};
+use crate::fresnel::{Dielectric, Fresnel, FresnelAverage};
 use crate::microfacet::NormalDistribution;
 use crate::spectrum::Spectrum;
 
-use super::kernel::LaneOp;
+use super::kernel::{LaneOp, Plain};
 use super::{Lanes, LengthError, SampleOut, Vec2s, Vec3s, eval_with, sample_with};
-use crate::bxdf::{BxdfSample, Prepare};
+use crate::bxdf::{At, BxdfSample, CompensatedState, Prepare};
 use crate::microfacet::Masking;
+use crate::microfacet::View;
 use glam::{Vec2, Vec3};
 
 impl<S: Spectrum + Lanes> Batch for Lambert<S> {}
@@ -24,7 +26,6 @@ impl<S: Spectrum + Lanes> Batch for DisneyDiffuse<S> {}
 impl<S: Spectrum + Lanes> Batch for Phong<S> {}
 impl<S: Spectrum + Lanes> Batch for BlinnPhong<S> {}
 impl<S: Spectrum + Lanes> Batch for Glazed<S> {}
-impl<D, S: Spectrum + Lanes, C: Prepare<Spectrum = f32> + Clone> Batch for Plastic<D, S, C> {}
 impl<F: Fresnel> Batch for Mirror<F> where F::Spectrum: Lanes {}
 impl Batch for SmoothDielectric {}
 impl<B: Prepare<Spectrum = f32> + Clone, S: Spectrum + Lanes> Batch for Mono<B, S> {}
@@ -167,3 +168,99 @@ batch_by_masking!(impl<D: NormalDistribution + Clone> for RoughDielectric<D> whe
 batch_by_masking!(impl<D: NormalDistribution + Clone, F: FresnelAverage>
     for CompensatedMicrofacet<D, F> where F::Spectrum);
 batch_by_masking!(impl<D: NormalDistribution + Clone> for CompensatedDielectric<D> where f32);
+
+/// A plastic's coat calls with the coat's masking term fixed (height-correlated): the
+/// plastic's `eval` and `sample` loops then vectorise as the microfacet models' do.
+struct HeightCorrelatedCoat;
+
+/// [`CoatCalls`] with height-correlated masking for the coat `$coat` (prepared state
+/// `$state`), whose batched sample is `$sample` (the compensated coat's draws from both of
+/// its lobes in every lane: the same numbers).
+macro_rules! height_correlated_coat {
+    ($coat:ty, $state:ty, $sample:ident::<$lanes:tt>) => {
+        impl<D: NormalDistribution> CoatCalls<$coat> for HeightCorrelatedCoat {
+            #[inline(always)]
+            fn eval(coat: &$coat, at: &$state, wi: Vec3) -> f32 {
+                coat.eval_with::<false>(at, wi, Masking::HeightCorrelated)
+            }
+
+            #[inline(always)]
+            fn eval_pdf(coat: &$coat, at: &$state, wi: Vec3) -> (f32, f32) {
+                coat.eval_pdf_with::<false>(at, wi, Masking::HeightCorrelated)
+            }
+
+            #[inline(always)]
+            fn sample(coat: &$coat, at: &$state, u: Vec2, uc: f32) -> Option<BxdfSample<f32>> {
+                coat.$sample::<$lanes>(at, u, uc, Masking::HeightCorrelated)
+            }
+        }
+    };
+}
+
+height_correlated_coat!(Microfacet<D, Dielectric>, At<View>, sample_with::<false>);
+height_correlated_coat!(
+    CompensatedMicrofacet<D, Dielectric>,
+    CompensatedState<At<View>, f32>,
+    sample_with::<true>
+);
+
+impl<D, S: Spectrum, C: Prepare<Spectrum = f32>> LaneOp<Plastic<D, S, C>> for HeightCorrelatedCoat
+where
+    HeightCorrelatedCoat: CoatCalls<C>,
+{
+    #[inline(always)]
+    fn eval(m: &Plastic<D, S, C>, wo: Vec3, wi: Vec3) -> S {
+        m.eval_with::<Self>(&m.prepare(wo), wi)
+    }
+
+    #[inline(always)]
+    fn pdf(m: &Plastic<D, S, C>, wo: Vec3, wi: Vec3) -> f32 {
+        m.pdf_prepared(&m.prepare(wo), wi)
+    }
+
+    #[inline(always)]
+    fn sample(m: &Plastic<D, S, C>, wo: Vec3, u: Vec2, uc: f32) -> Option<BxdfSample<S>> {
+        m.sample_with::<Self>(&m.prepare(wo), u, uc)
+    }
+}
+
+/// `Batch` for a plastic with the coat `$coat`: its `eval` and `sample` loops with the coat's
+/// masking term fixed. The constructors give every coat height-correlated masking; a coat
+/// with another term would take the plain loops (the same numbers, not vectorised).
+macro_rules! batch_plastic {
+    ($coat:ty) => {
+        impl<D: NormalDistribution + Clone, S: Spectrum + Lanes> Batch for Plastic<D, S, $coat> {
+            fn eval_batch(
+                &self,
+                wo: Vec3s<'_>,
+                wi: Vec3s<'_>,
+                f: S::Mut<'_>,
+            ) -> Result<(), LengthError> {
+                match self.coat().masking() {
+                    Masking::HeightCorrelated => {
+                        eval_with::<_, HeightCorrelatedCoat>(self, wo, wi, f)
+                    }
+                    _ => eval_with::<_, Plain>(self, wo, wi, f),
+                }
+            }
+
+            fn sample_batch(
+                &self,
+                wo: Vec3s<'_>,
+                u: Vec2s<'_>,
+                uc: &[f32],
+                out: SampleOut<'_, S>,
+            ) -> Result<(), LengthError> {
+                match self.coat().masking() {
+                    Masking::HeightCorrelated => {
+                        sample_with::<_, HeightCorrelatedCoat>(self, wo, u, uc, out)
+                    }
+                    _ => sample_with::<_, Plain>(self, wo, u, uc, out),
+                }
+            }
+        }
+    };
+}
+
+batch_plastic!(Microfacet<D, Dielectric>);
+batch_plastic!(CompensatedMicrofacet<D, Dielectric>);

@@ -249,6 +249,29 @@ impl<D: NormalDistribution, F: FresnelAverage> CompensatedMicrofacet<D, F> {
         }
     }
 
+    /// [`Prepare::eval_pdf_prepared`] under `masking` (and `PER_CHANNEL`, as
+    /// [`eval_with`](Self::eval_with)).
+    #[inline(always)]
+    pub(crate) fn eval_pdf_with<const PER_CHANNEL: bool>(
+        &self,
+        at: &CompensatedState<At<View>, F::Spectrum>,
+        wi: Vec3,
+        masking: Masking,
+    ) -> (F::Spectrum, f32) {
+        let (f, pdf) = self
+            .inner
+            .eval_pdf_with::<PER_CHANNEL>(&at.inner, wi, masking);
+        let p = at.probability;
+        match self.compensation {
+            Compensation::KullaConty if both_above(at.inner.wo, wi) => (
+                f + self.lobe(at.outgoing, wi),
+                (1.0 - p) * pdf + p * cosine_hemisphere_pdf(wi.z),
+            ),
+            Compensation::KullaConty => (f, (1.0 - p) * pdf),
+            Compensation::Turquin => (f * at.outgoing, pdf),
+        }
+    }
+
     /// [`Prepare::sample_prepared`] under `masking`. `LANES` is the form for a batched loop:
     /// every lane draws both lobes' directions and keeps the one its `uc` picks, so that the
     /// loop has no branch between lobes and vectorises, and the Fresnel term is taken channel
@@ -359,16 +382,7 @@ impl<D: NormalDistribution, F: FresnelAverage> Prepare for CompensatedMicrofacet
 
     #[inline(always)]
     fn eval_pdf_prepared(&self, at: &Self::Prepared, wi: Vec3) -> (F::Spectrum, f32) {
-        let (f, pdf) = self.inner.eval_pdf_prepared(&at.inner, wi);
-        let p = at.probability;
-        match self.compensation {
-            Compensation::KullaConty if both_above(at.inner.wo, wi) => (
-                f + self.lobe(at.outgoing, wi),
-                (1.0 - p) * pdf + p * cosine_hemisphere_pdf(wi.z),
-            ),
-            Compensation::KullaConty => (f, (1.0 - p) * pdf),
-            Compensation::Turquin => (f * at.outgoing, pdf),
-        }
+        self.eval_pdf_with::<false>(at, wi, self.inner.masking())
     }
 
     #[inline(always)]

@@ -231,6 +231,116 @@ fn coat_directional_albedo<D: NormalDistribution>(
     sum / (STRATA * STRATA) as f32
 }
 
+/// How a plastic calls its coat: its own [`Prepare`] calls ([`OwnCalls`]), or, in a batched
+/// loop, the same calls with the coat's masking term fixed outside the loop (which then does
+/// not branch on it per lane).
+pub(crate) trait CoatCalls<C: Prepare<Spectrum = f32>> {
+    /// The coat's `eval_prepared`.
+    fn eval(coat: &C, at: &C::Prepared, wi: Vec3) -> f32;
+    /// The coat's `eval_pdf_prepared`.
+    fn eval_pdf(coat: &C, at: &C::Prepared, wi: Vec3) -> (f32, f32);
+    /// The coat's `sample_prepared`.
+    fn sample(coat: &C, at: &C::Prepared, u: Vec2, uc: f32) -> Option<BxdfSample<f32>>;
+}
+
+/// The coat's own [`Prepare`] calls.
+pub(crate) struct OwnCalls;
+
+impl<C: Prepare<Spectrum = f32>> CoatCalls<C> for OwnCalls {
+    #[inline(always)]
+    fn eval(coat: &C, at: &C::Prepared, wi: Vec3) -> f32 {
+        coat.eval_prepared(at, wi)
+    }
+
+    #[inline(always)]
+    fn eval_pdf(coat: &C, at: &C::Prepared, wi: Vec3) -> (f32, f32) {
+        coat.eval_pdf_prepared(at, wi)
+    }
+
+    #[inline(always)]
+    fn sample(coat: &C, at: &C::Prepared, u: Vec2, uc: f32) -> Option<BxdfSample<f32>> {
+        coat.sample_prepared(at, u, uc)
+    }
+}
+
+impl<D, S: Spectrum, C: Prepare<Spectrum = f32>> Plastic<D, S, C> {
+    /// The coat.
+    #[inline(always)]
+    pub(crate) fn coat(&self) -> &C {
+        &self.coat
+    }
+
+    /// [`Prepare::eval_prepared`], calling the coat through `O`.
+    #[inline(always)]
+    pub(crate) fn eval_with<O: CoatCalls<C>>(
+        &self,
+        at: &At<PlasticState<C::Prepared>>,
+        wi: Vec3,
+    ) -> S {
+        if !both_above(at.wo, wi) {
+            return S::zero();
+        }
+        let st = &at.state;
+        S::splat(O::eval(&self.coat, &st.coat, wi)) + self.diffuse(st.t_o, wi)
+    }
+
+    /// [`Prepare::eval_pdf_prepared`], calling the coat through `O`.
+    #[inline(always)]
+    fn eval_pdf_with<O: CoatCalls<C>>(
+        &self,
+        at: &At<PlasticState<C::Prepared>>,
+        wi: Vec3,
+    ) -> (S, f32) {
+        if !both_above(at.wo, wi) {
+            return (S::zero(), 0.0);
+        }
+        let st = &at.state;
+        let (coat_f, coat_pdf) = O::eval_pdf(&self.coat, &st.coat, wi);
+        (
+            S::splat(coat_f) + self.diffuse(st.t_o, wi),
+            st.p_coat * coat_pdf + (1.0 - st.p_coat) * cosine_hemisphere_pdf(wi.z),
+        )
+    }
+
+    /// [`Prepare::sample_prepared`], calling the coat through `O`.
+    #[inline(always)]
+    pub(crate) fn sample_with<O: CoatCalls<C>>(
+        &self,
+        at: &At<PlasticState<C::Prepared>>,
+        u: Vec2,
+        uc: f32,
+    ) -> Option<BxdfSample<S>> {
+        if !(at.wo.z > 0.0) {
+            return None;
+        }
+        let st = &at.state;
+        // The coat's value and density at wi: from its own sample when it drew wi (the same
+        // numbers its eval and pdf give), else evaluated together with one D.
+        let (wi, coat_f, coat_pdf, lobe) = if uc < st.p_coat {
+            // The coat's own lobe choice (a compensated coat has two), from what is left of uc.
+            let s = O::sample(&self.coat, &st.coat, u, reuse_uniform(uc, 0.0, st.p_coat))?;
+            (s.wi, s.f, s.pdf, Lobes::GLOSSY_REFLECTION)
+        } else {
+            let wi = cosine_hemisphere(u);
+            let (f, pdf) = O::eval_pdf(&self.coat, &st.coat, wi);
+            (wi, f, pdf, Lobes::DIFFUSE_REFLECTION)
+        };
+        if !(wi.z > 0.0) {
+            return None;
+        }
+        let pdf = st.p_coat * coat_pdf + (1.0 - st.p_coat) * cosine_hemisphere_pdf(wi.z);
+        if !usable_pdf(pdf) {
+            return None;
+        }
+        Some(BxdfSample::new(
+            wi,
+            S::splat(coat_f) + self.diffuse(st.t_o, wi),
+            pdf,
+            lobe,
+        ))
+    }
+}
+
 impl<D, S: Spectrum, C: Prepare<Spectrum = f32>> Prepare for Plastic<D, S, C> {
     type Spectrum = S;
     type Prepared = At<PlasticState<C::Prepared>>;
@@ -250,11 +360,7 @@ impl<D, S: Spectrum, C: Prepare<Spectrum = f32>> Prepare for Plastic<D, S, C> {
 
     #[inline(always)]
     fn eval_prepared(&self, at: &Self::Prepared, wi: Vec3) -> S {
-        if !both_above(at.wo, wi) {
-            return S::zero();
-        }
-        let st = &at.state;
-        S::splat(self.coat.eval_prepared(&st.coat, wi)) + self.diffuse(st.t_o, wi)
+        self.eval_with::<OwnCalls>(at, wi)
     }
 
     #[inline(always)]
@@ -269,49 +375,12 @@ impl<D, S: Spectrum, C: Prepare<Spectrum = f32>> Prepare for Plastic<D, S, C> {
 
     #[inline(always)]
     fn eval_pdf_prepared(&self, at: &Self::Prepared, wi: Vec3) -> (S, f32) {
-        if !both_above(at.wo, wi) {
-            return (S::zero(), 0.0);
-        }
-        let st = &at.state;
-        let (coat_f, coat_pdf) = self.coat.eval_pdf_prepared(&st.coat, wi);
-        (
-            S::splat(coat_f) + self.diffuse(st.t_o, wi),
-            st.p_coat * coat_pdf + (1.0 - st.p_coat) * cosine_hemisphere_pdf(wi.z),
-        )
+        self.eval_pdf_with::<OwnCalls>(at, wi)
     }
 
     #[inline(always)]
     fn sample_prepared(&self, at: &Self::Prepared, u: Vec2, uc: f32) -> Option<BxdfSample<S>> {
-        if !(at.wo.z > 0.0) {
-            return None;
-        }
-        let st = &at.state;
-        // The coat's value and density at wi: from its own sample when it drew wi (the same
-        // numbers its eval and pdf give), else evaluated together with one D.
-        let (wi, coat_f, coat_pdf, lobe) = if uc < st.p_coat {
-            // The coat's own lobe choice (a compensated coat has two), from what is left of uc.
-            let s = self
-                .coat
-                .sample_prepared(&st.coat, u, reuse_uniform(uc, 0.0, st.p_coat))?;
-            (s.wi, s.f, s.pdf, Lobes::GLOSSY_REFLECTION)
-        } else {
-            let wi = cosine_hemisphere(u);
-            let (f, pdf) = self.coat.eval_pdf_prepared(&st.coat, wi);
-            (wi, f, pdf, Lobes::DIFFUSE_REFLECTION)
-        };
-        if !(wi.z > 0.0) {
-            return None;
-        }
-        let pdf = st.p_coat * coat_pdf + (1.0 - st.p_coat) * cosine_hemisphere_pdf(wi.z);
-        if !usable_pdf(pdf) {
-            return None;
-        }
-        Some(BxdfSample::new(
-            wi,
-            S::splat(coat_f) + self.diffuse(st.t_o, wi),
-            pdf,
-            lobe,
-        ))
+        self.sample_with::<OwnCalls>(at, u, uc)
     }
 
     #[inline]
