@@ -7,7 +7,7 @@
 use lobe::batch::{Batch, Lanes, LengthError, SampleOut, Vec2s, Vec3s, Vec3sMut};
 use lobe::bxdf::{
     BlinnPhong, BlinnPhongForm, Bxdf, DisneyDiffuse, EnergyPreservingOrenNayar, Glazed, Lambert,
-    Microfacet, Mirror, OrenNayar, Phong, Plastic, RoughDielectric, SmoothDielectric,
+    Lobes, Microfacet, Mirror, OrenNayar, Phong, Plastic, RoughDielectric, SmoothDielectric,
     ThinDielectric, TransportMode,
 };
 use lobe::fresnel::{Conductor, Dielectric, Schlick};
@@ -148,7 +148,13 @@ fn same<S: Spectrum>(a: S, b: S) -> bool {
     })
 }
 
-fn check<M: Batch + Bxdf<Spectrum = <M as lobe::bxdf::Prepare>::Spectrum>>(name: &str, m: &M)
+/// Checks every lane of `m`'s batched calls against its scalar calls, bit for bit, and returns
+/// the lobes the scalar samples came from (so that a caller can ask that every branch of a
+/// sampler was compared).
+fn check<M: Batch + Bxdf<Spectrum = <M as lobe::bxdf::Prepare>::Spectrum>>(
+    name: &str,
+    m: &M,
+) -> Vec<Lobes>
 where
     <M as lobe::bxdf::Prepare>::Spectrum: Buffers,
 {
@@ -177,6 +183,7 @@ where
     .unwrap();
 
     let mut checked_samples = 0;
+    let mut lobes = Vec::new();
     for k in 0..N {
         let (o, w) = (i.wo[k], i.wi[k]);
         let want = m.eval(o, w);
@@ -194,6 +201,9 @@ where
         match m.sample(o, i.u[k], i.uc[k]) {
             Some(s) => {
                 checked_samples += 1;
+                if !lobes.contains(&s.lobe) {
+                    lobes.push(s.lobe);
+                }
                 assert!(
                     same(swi.get(k), s.wi)
                         && same(S::<M>::read(&sf, k), s.f)
@@ -219,6 +229,18 @@ where
         checked_samples > 200,
         "{name}: only {checked_samples} lanes sampled"
     );
+    lobes
+}
+
+/// Asserts that the scalar samples `check` compared came from both the diffuse and the glossy
+/// reflection lobe: a two-lobe model's batched loop was compared on both of its branches.
+fn assert_both_lobes(name: &str, lobes: &[Lobes]) {
+    for lobe in [Lobes::DIFFUSE_REFLECTION, Lobes::GLOSSY_REFLECTION] {
+        assert!(
+            lobes.contains(&lobe),
+            "{name}: no lane sampled {lobe:?} ({lobes:?})"
+        );
+    }
 }
 
 fn a(x: f32) -> Alpha {
@@ -322,10 +344,23 @@ fn the_other_models_equal_the_scalar_path() {
         .unwrap(),
     );
     check("Glazed", &Glazed::new(rgb, glass).unwrap());
-    check(
+    // The plastic's loops fix its coat's masking term: GGX and Beckmann coats, RGB and
+    // monochrome, both lobes compared.
+    let plastic = check(
         "Plastic",
         &Plastic::new(rgb, Ggx::isotropic(a(0.2)), glass).unwrap(),
     );
+    assert_both_lobes("Plastic", &plastic);
+    let plastic = check(
+        "Plastic, Beckmann coat",
+        &Plastic::new(rgb, Beckmann::isotropic(a(0.5)), glass).unwrap(),
+    );
+    assert_both_lobes("Plastic, Beckmann coat", &plastic);
+    let plastic = check(
+        "Plastic, monochrome",
+        &Plastic::new(0.6_f32, Ggx::isotropic(a(0.3)), glass).unwrap(),
+    );
+    assert_both_lobes("Plastic, monochrome", &plastic);
     check("Mirror", &Mirror::new(Dielectric { eta: glass }));
     check("smooth glass", &SmoothDielectric::new(glass));
     check("thin glass", &ThinDielectric::new(glass));
@@ -399,11 +434,21 @@ fn the_compensated_models_equal_the_scalar_path() {
         Vec3::new(3.983, 2.386, 1.603),
     )
     .unwrap();
-    check(
-        "GGX gold compensated",
-        &Microfacet::new(Ggx::isotropic(a(0.6)), hc, Conductor { ior: gold })
-            .with_energy_compensation()
-            .unwrap(),
+    // The batched sample draws both lobes' directions in every lane and keeps one: compared
+    // on lanes of each lobe, for GGX and for Beckmann (whose sampler is another loop).
+    fn both_lobes_of<D: lobe::tables::TabulatedAlbedo + Clone>(
+        name: &str,
+        d: D,
+        ior: ComplexIor<Vec3>,
+    ) {
+        let m = Microfacet::new(d, Masking::HeightCorrelated, Conductor { ior });
+        assert_both_lobes(name, &check(name, &m.with_energy_compensation().unwrap()));
+    }
+    both_lobes_of("GGX gold compensated", Ggx::isotropic(a(0.6)), gold);
+    both_lobes_of(
+        "Beckmann gold compensated",
+        Beckmann::isotropic(a(0.7)),
+        gold,
     );
     // The other masking terms take a table of one's own (here the height-correlated row:
     // the loops, not the compensation's accuracy, are under test).
@@ -450,8 +495,9 @@ fn the_compensated_models_equal_the_scalar_path() {
             );
         }
     }
-    check(
+    let lobes = check(
         "plastic compensated",
         &Plastic::compensated(Vec3::new(0.8, 0.5, 0.2), Ggx::isotropic(a(0.4)), glass).unwrap(),
     );
+    assert_both_lobes("plastic compensated", &lobes);
 }

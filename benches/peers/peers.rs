@@ -371,7 +371,9 @@ fn main() {
     println!(
         "\nInterleaved, 15 rounds, ns per evaluation: median [min, max]; ratios = medians of the per-round ratios"
     );
-    println!("| work | lobe | lobe batched | bsdf 0.1.1 | lobe / bsdf | lobe scalar / batched |");
+    println!(
+        "| work (ns per call) | lobe | lobe batched | bsdf 0.1.1 | lobe / bsdf | lobe scalar / batched |"
+    );
     println!("| --- | --- | --- | --- | --- | --- |");
     let fmt = |t: &[f64]| {
         let (m, lo, hi) = spread(t);

@@ -173,7 +173,7 @@ def main():
             rounds.append((time_lobe(exe, path), time_mitsuba(c)))
     print(f"\nGGX gold conductor, alpha 0.3, {n} lanes, one core, {ROUNDS} interleaved rounds")
     print("ns per lane: median [min, max] over rounds; ratio = median of per-round lobe/Mitsuba\n")
-    print("| kernel | lobe batched | Mitsuba 3 (llvm_ad_rgb) | ratio |")
+    print("| kernel (ns per lane) | lobe batched | Mitsuba 3 (llvm_ad_rgb) | ratio |")
     print("| --- | --- | --- | --- |")
     names = {
         "copy": "memory pass (wo + wi)",

@@ -29,7 +29,9 @@
 //! ```
 //!
 //! **The same numbers as the scalar path.** A batched call runs the model's own scalar code
-//! ([`Prepare`]) on every lane: nothing is written twice, and the results
+//! ([`Prepare`]) on every lane (one exception, below: the energy-compensated microfacet
+//! model's `sample` has a second form for loops, written beside the scalar one and equal to
+//! it by construction), and the results
 //! equal `eval`, `pdf` and `sample` bit for bit where the compiler keeps the operations as
 //! written (it does not contract or reassociate `f32` arithmetic, so that is every lane the
 //! tests have seen; `tests/batch.rs` checks adversarial lanes — grazing, below the horizon,
@@ -55,8 +57,9 @@
 //! loops run that scalar form, one call per lane. A model whose `sample` picks one of two
 //! lobes per lane branches between them; the energy-compensated microfacet model's batched
 //! `sample` instead draws both lobes' directions in every lane and keeps the one the lane
-//! picks, which vectorises (the same numbers: each lobe's value and density come from the
-//! same calls). The plastic's loops call its coat with the coat's masking term fixed, as the
+//! picks, which vectorises for GGX (the same numbers: each lobe's value and density come from
+//! the same arithmetic; Beckmann's sampler, a Newton iteration, runs one lane at a time and
+//! leaves that model's batched `sample` at about the scalar speed either way). The plastic's loops call its coat with the coat's masking term fixed, as the
 //! microfacet models' loops do (read per lane, the term kept the loop from vectorising).
 //! The compensated glass's batched `sample` still branches between lobes and runs at about
 //! the scalar speed (drawing from both lobes in every lane did not vectorise either).

@@ -173,7 +173,8 @@ impl<D: NormalDistribution, F: Fresnel> Microfacet<D, F> {
     }
 
     /// The direction [`sample_with`](Self::sample_with) draws for `u`: `wo` reflected about
-    /// a normal drawn from the distribution (below the surface where the sample is refused).
+    /// a normal drawn from the distribution (possibly below the surface: `sample_with`
+    /// refuses it there, and where its density is unusable).
     #[inline(always)]
     pub(crate) fn sample_direction(&self, at: &At<View>, u: Vec2) -> Vec3 {
         reflect_away(at.wo, self.distribution.sample_reflection(&at.state, u))
@@ -191,6 +192,8 @@ impl<D: NormalDistribution, F: Fresnel> Microfacet<D, F> {
         if !(at.wo.z > 0.0) {
             return None;
         }
+        // `CompensatedMicrofacet`'s batched form relies on this: the sample is `eval_pdf_with`
+        // at `sample_direction`, refused exactly where that density is unusable.
         let wi = self.sample_direction(at, u);
         // Evaluate at wo + wi, as `eval` and `pdf` do, rather than at `m`: the two differ by
         // rounding, and a renderer's MIS needs `pdf` to reproduce the sample's density
