@@ -29,10 +29,10 @@ use inputs::{Inputs, N, inputs, two_sided};
 use interleave::{Kernel, ratio, rounds, spread};
 use lanes::PerLane;
 use lobe::batch::{Batch, Lanes, SampleOut, Vec2s, Vec3s, Vec3sMut};
-use lobe::bxdf::{Bxdf, Lambert, Microfacet, Plastic, RoughDielectric};
+use lobe::bxdf::{Bxdf, Lambert, Microfacet, Plastic, Prepare, RoughDielectric};
 use lobe::fresnel::{Conductor as ExactConductor, Schlick};
 use lobe::microfacet::{Ggx, Masking};
-use lobe::{Alpha, ComplexIor, Eta, Vec3};
+use lobe::{Alpha, Eta, Vec3};
 use std::hint::black_box;
 use std::time::Duration;
 
@@ -209,6 +209,20 @@ where
     ]
 }
 
+/// The three calls of a lobe model, scalar and batched, as pairs of kernels for the same work.
+fn scalar_and_batched<'a, B: Bxdf + Batch>(
+    name: &str,
+    m: &'a B,
+    i: &'a Inputs,
+    s: &'a Soa,
+) -> impl Iterator<Item = [Kernel<'a>; 2]>
+where
+    <B as Prepare>::Spectrum: Channels,
+{
+    let (scalar, batched) = (lobe_kernels(name, m, i), batch_kernels(name, m, s));
+    scalar.into_iter().zip(batched).map(|(a, b)| [a, b])
+}
+
 /// The divider's ceiling, scalar and batched: one square root and one division per element,
 /// on `1 + cos θo` and `1 + cos θi` of the inputs.
 fn divider_kernels(i: &Inputs) -> [Kernel<'static>; 2] {
@@ -302,7 +316,8 @@ fn main() {
     }
 
     // Pairs of (lobe scalar, lobe batched) for work the peer has no model of: the rough
-    // dielectric (the sides mixed), and the divider alone.
+    // dielectric (the sides mixed), the compensated models, the plastic, and the divider
+    // alone.
     let glass = RoughDielectric::new(
         Ggx::isotropic(Alpha::new(ALPHA).unwrap()),
         Eta::new(1.5).unwrap(),
@@ -310,46 +325,39 @@ fn main() {
     let mixed = two_sided(&inputs);
     let mixed_soa = to_soa(&mixed);
     let mut pairs: Vec<[Kernel; 2]> = Vec::new();
-    let lobe_g = lobe_kernels("GGX rough glass η 1.5, sides mixed", &glass, &mixed);
-    let batch_g = batch_kernels("GGX rough glass η 1.5, sides mixed", &glass, &mixed_soa);
-    for (a, b) in lobe_g.into_iter().zip(batch_g) {
-        pairs.push([a, b]);
-    }
-    let gold = ComplexIor::new(
-        Vec3::new(0.143, 0.375, 1.442),
-        Vec3::new(3.983, 2.386, 1.603),
-    )
-    .unwrap();
+    let name = "GGX rough glass η 1.5, sides mixed";
+    pairs.extend(scalar_and_batched(name, &glass, &mixed, &mixed_soa));
     let compensated_gold = Microfacet::new(
         Ggx::isotropic(Alpha::new(ALPHA).unwrap()),
         Masking::HeightCorrelated,
-        ExactConductor { ior: gold },
+        ExactConductor {
+            ior: lobe::metals::GOLD.rgb(),
+        },
     )
     .with_energy_compensation()
     .unwrap();
-    let lobe_cg = lobe_kernels("compensated GGX gold", &compensated_gold, &inputs);
-    let batch_cg = batch_kernels("compensated GGX gold", &compensated_gold, &soa);
-    for (a, b) in lobe_cg.into_iter().zip(batch_cg) {
-        pairs.push([a, b]);
-    }
+    let name = "compensated GGX gold";
+    pairs.extend(scalar_and_batched(name, &compensated_gold, &inputs, &soa));
     let compensated_glass = glass.with_energy_compensation().unwrap();
     let name = "compensated GGX rough glass η 1.5, sides mixed";
-    let lobe_cd = lobe_kernels(name, &compensated_glass, &mixed);
-    let batch_cd = batch_kernels(name, &compensated_glass, &mixed_soa);
-    for (a, b) in lobe_cd.into_iter().zip(batch_cd) {
-        pairs.push([a, b]);
-    }
+    pairs.extend(scalar_and_batched(
+        name,
+        &compensated_glass,
+        &mixed,
+        &mixed_soa,
+    ));
     let plastic = Plastic::new(
         Vec3::new(0.8, 0.6, 0.4),
         Ggx::isotropic(Alpha::new(ALPHA).unwrap()),
         Eta::new(1.5).unwrap(),
     )
     .unwrap();
-    let lobe_p = lobe_kernels("GGX plastic RGB", &plastic, &inputs);
-    let batch_p = batch_kernels("GGX plastic RGB", &plastic, &soa);
-    for (a, b) in lobe_p.into_iter().zip(batch_p) {
-        pairs.push([a, b]);
-    }
+    pairs.extend(scalar_and_batched(
+        "GGX plastic RGB",
+        &plastic,
+        &inputs,
+        &soa,
+    ));
     pairs.push(divider_kernels(&inputs));
     for [a, b] in &mut pairs {
         let mut g = c.benchmark_group(a.name.replace(": scalar", ""));

@@ -20,9 +20,9 @@ Timing: Dr.Jit on one thread (`dr.set_thread_count(1)`), each kernel compiled by
 call (not timed), then five timed launches; lobe's batched calls (rustc's IEEE arithmetic,
 no contraction or reassociation; no warm-up other than one untimed pass) in `batch-timing`,
 also five passes. Whether Dr.Jit approximates divisions or square roots is not assumed: the
-two chain rows measure it. The two sides alternate in
-rounds (lobe, Mitsuba, lobe, Mitsuba, ...) and the table gives medians over rounds with their
-spread, and the median of the per-round ratios.
+two chain rows measure it. The two sides alternate in rounds (lobe, Mitsuba, lobe, Mitsuba,
+...) and the table gives medians over rounds with their spread, and the median of the
+per-round ratios.
 """
 
 import json

@@ -59,11 +59,12 @@
 //! `sample` instead draws both lobes' directions in every lane and keeps the one the lane
 //! picks, which vectorises for GGX (the same numbers: each lobe's value and density come from
 //! the same arithmetic; Beckmann's sampler, a Newton iteration, runs one lane at a time and
-//! leaves that model's batched `sample` at about the scalar speed either way). The plastic's loops call its coat with the coat's masking term fixed, as the
-//! microfacet models' loops do (read per lane, the term kept the loop from vectorising).
-//! The compensated glass's batched `sample` still branches between lobes and runs at about
-//! the scalar speed (drawing from both lobes in every lane did not vectorise either: LLVM's
-//! cost model finds vectorising that loop not beneficial).
+//! leaves that model's batched `sample` at about the scalar speed either way). The
+//! plastic's loops call its coat with the coat's masking term fixed, as the microfacet
+//! models' loops do (read per lane, the term kept the loop from vectorising). The
+//! compensated glass's batched `sample` still branches between lobes and runs at about the
+//! scalar speed (drawing from both lobes in every lane did not vectorise either: LLVM's cost
+//! model finds vectorising that loop not beneficial).
 //!
 //! **Run-time dispatch.** The default `x86_64` target has only SSE2, and a library cannot
 //! ask its users for `-C target-cpu=native`. On x86 and x86_64 each batched call asks the
