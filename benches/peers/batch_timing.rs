@@ -6,7 +6,8 @@
 //! ```
 //!
 //! Besides the model's three calls it times, on the same lanes, a memory pass (`wo + wi`: the
-//! floor) and three parts of the work, which the script times on Mitsuba's side too: the
+//! floor with ordinary stores; Dr.Jit's kernels store with streaming stores, see the script)
+//! and three parts of the work, which the script times on Mitsuba's side too: the
 //! exact conductor Fresnel term alone (gold, RGB, at `cos θ = wo.z`), a chain of twelve
 //! divisions `z ← y/z + 1` and a chain of twelve square roots `z ← √(z + y)` (`y = 1 + wi.z`,
 //! from `z = 1 + wo.z`), which show what one division and one square root cost each side.

@@ -66,6 +66,13 @@
 //! scalar speed (drawing from both lobes in every lane did not vectorise either: LLVM's cost
 //! model finds vectorising that loop not beneficial).
 //!
+//! **Batch size.** The outputs are written with ordinary stores, which read each cache line
+//! before writing it. A batch whose slices fit in the cache (a few thousand lanes, as a
+//! wavefront renderer's queue) pays nothing for that; past the caches each output slice costs
+//! a second pass over memory. A streaming store would skip that read, but needs `unsafe`, and
+//! measured on a cache-sized batch it is the slower one: it evicts what the next stage reads
+//! (the README's comparison with Mitsuba 3, whose JIT streams its stores, has the figures).
+//!
 //! **Run-time dispatch.** The default `x86_64` target has only SSE2, and a library cannot
 //! ask its users for `-C target-cpu=native`. On x86 and x86_64 each batched call asks the
 //! [`pulp`](https://docs.rs/pulp) crate for the widest instruction set the CPU has — AVX-512
