@@ -237,6 +237,12 @@ def main():
         fmt = lambda xs: f"{statistics.median(xs):.2f} [{min(xs):.2f}, {max(xs):.2f}]"  # noqa: E731
         name = names.get(k, k)
         print(f"| {name} | {fmt(lo)} | {fmt(mi_)} | {statistics.median(ra):.2f}× [{min(ra):.2f}, {max(ra):.2f}] |")
+    # Mitsuba's fixed cost per call: from Python each call traces the computation again,
+    # hashes it to find the compiled kernel and launches it, whatever the batch.
+    few = 16
+    small = time_mitsuba(c[:, :few])
+    per_call = ", ".join(f"{k} {small[k] * few / 1000:.1f} µs" for k in ["eval", "pdf", "sample"])
+    print(f"\nMitsuba's time per call on {few} lanes (its cost per call): {per_call}")
     try:
         kind = drjit_store_kind()
     except Exception as e:  # noqa: BLE001 - the table is printed; this line only explains it
