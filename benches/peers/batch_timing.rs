@@ -3,6 +3,7 @@
 //! ```sh
 //! batch-timing write FILE N   # writes N (wo, wi, u, uc) lanes, f32 little-endian, one array per coordinate
 //! batch-timing time FILE      # times lobe's batched GGX gold conductor on them; prints ns per lane
+//! batch-timing sizes           # lobe's batched eval at 4,096, 2^15 and 2^20 lanes (no Mitsuba)
 //! ```
 //!
 //! Besides the model's three calls it times, on the same lanes, a memory pass (`wo + wi`: the
@@ -26,17 +27,17 @@ mod lanes;
 
 use lanes::PerLane;
 use lobe::batch::{Batch, SampleOut, Vec2s, Vec3s, Vec3sMut};
-use lobe::bxdf::Microfacet;
-use lobe::fresnel::{Conductor, Fresnel};
+use lobe::bxdf::{Lambert, Microfacet};
+use lobe::fresnel::{Conductor, Fresnel, Schlick};
 use lobe::microfacet::{Ggx, Masking};
 use lobe::verify::Pcg32;
 use lobe::{Alpha, ComplexIor, Vec3};
 use std::hint::black_box;
 use std::time::Instant;
 
-fn write(path: &str, n: usize) {
-    // The benchmarks' directions (5% grazing), n of them. File order: wo.x, wo.y, wo.z,
-    // wi.x, wi.y, wi.z, u.x, u.y, uc.
+/// The benchmarks' directions (5% grazing) and random numbers, `n` lanes, one array per
+/// coordinate: wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, u.x, u.y, uc.
+fn lanes(n: usize) -> Vec<Vec<f32>> {
     let mut rng = Pcg32::new(0x10be, 11);
     let mut cols: Vec<Vec<f32>> = (0..9).map(|_| Vec::with_capacity(n)).collect();
     for _ in 0..n {
@@ -48,12 +49,87 @@ fn write(path: &str, n: usize) {
         cols[7].push(rng.next_f32());
         cols[8].push(rng.next_f32());
     }
-    let bytes: Vec<u8> = cols
+    cols
+}
+
+fn write(path: &str, n: usize) {
+    let bytes: Vec<u8> = lanes(n)
         .iter()
         .flatten()
         .flat_map(|x| x.to_le_bytes())
         .collect();
     std::fs::write(path, bytes).expect("write the inputs");
+}
+
+/// The batch sizes of [`sizes`]: a renderer's queue, one that stays in a 2 MiB L2 with six
+/// inputs and three outputs, and one far past it.
+const SIZES: [usize; 3] = [4096, 1 << 15, 1 << 20];
+
+/// ns per lane of `m.eval_batch` over the first `n` lanes of `c`: the median of five passes
+/// of 2²² lanes each (the batch repeated), after one untimed pass.
+fn eval_per_lane<M: Batch<Spectrum = Vec3>>(m: &M, c: &[Vec<f32>], n: usize) -> f64 {
+    let wo = Vec3s {
+        x: &c[0][..n],
+        y: &c[1][..n],
+        z: &c[2][..n],
+    };
+    let wi = Vec3s {
+        x: &c[3][..n],
+        y: &c[4][..n],
+        z: &c[5][..n],
+    };
+    let mut o: Vec<Vec<f32>> = vec![vec![0.0; n]; 3];
+    let [r, g, b] = &mut o[..] else {
+        unreachable!()
+    };
+    let reps = (1 << 22) / n;
+    time(n * reps, || {
+        for _ in 0..reps {
+            m.eval_batch(wo, wi, Vec3sMut { x: r, y: g, z: b }).unwrap();
+            black_box(&r[0]);
+        }
+    })
+}
+
+/// The batched `eval` of a light model (Lambert), a Schlick conductor and the gold conductor
+/// over the three [`SIZES`], in five interleaved rounds: what a batch past the L2 costs.
+fn sizes() {
+    let c = lanes(SIZES[2]);
+    let alpha = Alpha::new(0.3).unwrap();
+    let lambert = Lambert::new(Vec3::new(0.8, 0.6, 0.4)).unwrap();
+    let schlick = Microfacet::new(
+        Ggx::isotropic(alpha),
+        Masking::HeightCorrelated,
+        Schlick::new(Vec3::new(1.0, 0.78, 0.34)).unwrap(),
+    );
+    let gold = Microfacet::new(
+        Ggx::isotropic(alpha),
+        Masking::HeightCorrelated,
+        Conductor { ior: gold() },
+    );
+    let names = ["Lambert RGB", "GGX Schlick RGB", "GGX gold"];
+    // t[model][size]: one figure per round.
+    let mut t = vec![vec![Vec::new(); SIZES.len()]; names.len()];
+    for _ in 0..5 {
+        for (k, &n) in SIZES.iter().enumerate() {
+            t[0][k].push(eval_per_lane(&lambert, &c, n));
+            t[1][k].push(eval_per_lane(&schlick, &c, n));
+            t[2][k].push(eval_per_lane(&gold, &c, n));
+        }
+    }
+    println!("batched eval, ns per lane: median [min, max] over 5 interleaved rounds\n");
+    println!("| model | 4,096 lanes | 2^15 lanes | 2^20 lanes |");
+    println!("| --- | --- | --- | --- |");
+    for (name, row) in names.iter().zip(&mut t) {
+        let cells: Vec<String> = row
+            .iter_mut()
+            .map(|xs| {
+                xs.sort_by(f64::total_cmp);
+                format!("{:.2} [{:.2}, {:.2}]", xs[2], xs[0], xs[4])
+            })
+            .collect();
+        println!("| {name} | {} |", cells.join(" | "));
+    }
 }
 
 fn read(path: &str) -> Vec<Vec<f32>> {
@@ -211,6 +287,9 @@ fn main() {
                 "{{\"eval\": {eval}, \"pdf\": {pdf}, \"sample\": {sample}, \"copy\": {copy}, \"fresnel\": {fresnel_alone}, \"divide\": {divide}, \"root\": {root}}}"
             );
         }
-        _ => eprintln!("usage: batch-timing write FILE N | batch-timing time FILE"),
+        Some("sizes") => sizes(),
+        _ => eprintln!(
+            "usage: batch-timing write FILE N | batch-timing time FILE | batch-timing sizes"
+        ),
     }
 }
