@@ -3,7 +3,7 @@
 //! ```sh
 //! batch-timing write FILE N   # writes N (wo, wi, u, uc) lanes, f32 little-endian, one array per coordinate
 //! batch-timing time FILE      # times lobe's batched GGX gold conductor on them; prints ns per lane
-//! batch-timing sizes           # lobe's batched eval at 4,096, 2^15 and 2^20 lanes (no Mitsuba)
+//! batch-timing sizes          # lobe's batched eval at 4,096, 2^15 and 2^20 lanes (no Mitsuba)
 //! ```
 //!
 //! Besides the model's three calls it times, on the same lanes, a memory pass (`wo + wi`: the

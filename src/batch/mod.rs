@@ -66,17 +66,17 @@
 //! scalar speed (drawing from both lobes in every lane did not vectorise either: LLVM's cost
 //! model finds vectorising that loop not beneficial).
 //!
-//! **Batch size.** Keep a batch within the L2 cache: a few thousand to about 2¹⁵ lanes for
-//! six input and three output slices. The outputs are written with ordinary stores, which
-//! read each cache line before writing it; past the L2 that doubles an output's memory
-//! traffic, and a model as light as a memory pass (`wo + wi`) waits on it: Lambert's batched
-//! `eval` costs 0.45–0.49 ns per lane over 4,096 and 2¹⁵ lanes and 0.90 over 2²⁰, the GGX
-//! Schlick conductor's 1.3 and 1.5, the GGX gold conductor's 4.9 and 5.1 (its arithmetic
-//! hides the traffic; `cargo run --release -p lobe-peers --bin batch-timing -- sizes`). A
-//! streaming store would skip the read, but it needs `unsafe`, and within the L2 it made a
-//! memory pass 1.8× slower: it sends every line on to memory, where an ordinary store leaves
-//! it in the cache for the next stage (the README's comparison with Mitsuba 3, whose JIT
-//! streams its stores, has the figures).
+//! **Batch size.** Keep a batch within the L2 cache: an RGB `eval`'s slices take 36 bytes per
+//! lane, so 2¹⁵ lanes are 1.1 MiB (the machine measured here has a 2 MiB L2). The outputs are
+//! written with ordinary stores, which read each cache line before writing it; past the L2 that
+//! doubles an output's memory traffic, and a model as light as a memory pass (`wo + wi`) waits
+//! on it: Lambert's batched `eval` costs 0.45–0.49 ns per lane over 4,096 and 2¹⁵ lanes and
+//! 0.90 over 2²⁰, the GGX Schlick conductor's 1.3 and 1.5, the GGX gold conductor's 4.9 and 5.1
+//! (its arithmetic hides the traffic; the README's `batch-timing sizes`). A streaming store
+//! would skip the read, but it needs `unsafe`, and within the L2 it made a memory pass 1.8×
+//! slower: it sends every line on to memory, where an ordinary store leaves it in the cache for
+//! the next stage (the README's comparison with Mitsuba 3, whose JIT streams its stores, has
+//! the figures).
 //!
 //! **Run-time dispatch.** The default `x86_64` target has only SSE2, and a library cannot
 //! ask its users for `-C target-cpu=native`. On x86 and x86_64 each batched call asks the
