@@ -102,11 +102,7 @@ fn sizes() {
         Masking::HeightCorrelated,
         Schlick::new(Vec3::new(1.0, 0.78, 0.34)).unwrap(),
     );
-    let gold = Microfacet::new(
-        Ggx::isotropic(alpha),
-        Masking::HeightCorrelated,
-        Conductor { ior: gold() },
-    );
+    let gold = gold_conductor();
     let names = ["Lambert RGB", "GGX Schlick RGB", "GGX gold"];
     // t[model][size]: one figure per round.
     let mut t = vec![vec![Vec::new(); SIZES.len()]; names.len()];
@@ -149,6 +145,16 @@ fn gold() -> ComplexIor<Vec3> {
         Vec3::new(3.983, 2.386, 1.603),
     )
     .unwrap()
+}
+
+/// The model of the comparison: Mitsuba's `roughconductor` (GGX, α 0.3, gold, plain
+/// visible-normal sampling).
+fn gold_conductor() -> Microfacet<Ggx, Conductor<Vec3>> {
+    Microfacet::new(
+        Ggx::isotropic(Alpha::new(0.3).unwrap()).with_bounded_reflection(false),
+        Masking::HeightCorrelated,
+        Conductor { ior: gold() },
+    )
 }
 
 /// `(r, g, b)[k] = F(cos[k])`, the exact conductor term channel by channel (the form the
@@ -198,12 +204,7 @@ fn main() {
         Some("time") => {
             let c = read(&args[2]);
             let n = c[0].len();
-            let gold = gold();
-            let m = Microfacet::new(
-                Ggx::isotropic(Alpha::new(0.3).unwrap()).with_bounded_reflection(false),
-                Masking::HeightCorrelated,
-                Conductor { ior: gold },
-            );
+            let m = gold_conductor();
             let m = black_box(&m);
             let wo = Vec3s {
                 x: &c[0],
@@ -251,7 +252,7 @@ fn main() {
                     });
                 }
             });
-            let fresnel = black_box(Conductor { ior: gold });
+            let fresnel = black_box(Conductor { ior: gold() });
             let fresnel_alone = time(n, || {
                 arch.dispatch(FresnelLanes {
                     fresnel: &fresnel,
