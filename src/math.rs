@@ -1,9 +1,11 @@
 //! `f32` math shims over `std` or `libm`, so the crate builds without the standard library.
 //!
-//! With the `std` feature (the default) each function calls the standard library's
-//! method; without it, the `libm` crate's. The error function, its complement and its
-//! inverse are implemented here, the same on both paths, because neither `core` nor
-//! `std` offers them on stable Rust.
+//! Each function calls the standard library's method, or the `libm` crate's when the `libm`
+//! feature is on (with or without `std`, as glam's `libm` feature does: so that the test
+//! suite measures the `no_std` math path too, `cargo test --features libm`). The two paths
+//! agree to within a few units in the last place, not bit for bit. The error function, its
+//! complement and its inverse are implemented here, the same on both paths, because neither
+//! `core` nor `std` offers them on stable Rust.
 
 /// Declares a one-argument shim with a `std` path and a `libm` path.
 macro_rules! shim {
@@ -12,11 +14,11 @@ macro_rules! shim {
         #[inline(always)]
         #[must_use]
         pub fn $name(x: f32) -> f32 {
-            #[cfg(feature = "std")]
+            #[cfg(not(feature = "libm"))]
             {
                 x.$std()
             }
-            #[cfg(not(feature = "std"))]
+            #[cfg(feature = "libm")]
             {
                 libm::$libm(x)
             }
@@ -55,11 +57,11 @@ shim!(/// Largest integer not above `x`.
 #[inline(always)]
 #[must_use]
 pub fn powf(x: f32, y: f32) -> f32 {
-    #[cfg(feature = "std")]
+    #[cfg(not(feature = "libm"))]
     {
         x.powf(y)
     }
-    #[cfg(not(feature = "std"))]
+    #[cfg(feature = "libm")]
     {
         libm::powf(x, y)
     }
@@ -69,11 +71,11 @@ pub fn powf(x: f32, y: f32) -> f32 {
 #[inline(always)]
 #[must_use]
 pub fn atan2(y: f32, x: f32) -> f32 {
-    #[cfg(feature = "std")]
+    #[cfg(not(feature = "libm"))]
     {
         y.atan2(x)
     }
-    #[cfg(not(feature = "std"))]
+    #[cfg(feature = "libm")]
     {
         libm::atan2f(y, x)
     }
@@ -84,11 +86,11 @@ pub fn atan2(y: f32, x: f32) -> f32 {
 #[inline(always)]
 #[must_use]
 pub fn sqrt_f64(x: f64) -> f64 {
-    #[cfg(feature = "std")]
+    #[cfg(not(feature = "libm"))]
     {
         x.sqrt()
     }
-    #[cfg(not(feature = "std"))]
+    #[cfg(feature = "libm")]
     {
         libm::sqrt(x)
     }
