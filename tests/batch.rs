@@ -501,3 +501,37 @@ fn the_compensated_models_equal_the_scalar_path() {
     );
     assert_both_lobes("plastic compensated", &lobes);
 }
+
+/// The instruction set the batched calls ran on is the one this CPU's features call for (the
+/// x86-64-v4 and v3 levels as the dispatch defines them), and is printed, so that a log shows
+/// which path the bit-for-bit checks above covered. CI runs this file again under QEMU's user
+/// mode with an emulated CPU and sets `LOBE_EXPECT_INSTRUCTION_SET` to the path that CPU must
+/// take (`AVX2`, `baseline`), so that an emulation that fell back to another path fails.
+#[test]
+fn the_instruction_set_is_the_cpus() {
+    let isa = lobe::batch::instruction_set();
+    eprintln!("batched path: {isa}");
+    #[cfg(target_arch = "x86_64")]
+    {
+        use lobe::batch::InstructionSet;
+        macro_rules! all {
+            ($($f:tt),*) => { true $(&& std::is_x86_feature_detected!($f))* };
+        }
+        let v3 = all!(
+            "fxsr", "sse3", "ssse3", "sse4.1", "sse4.2", "popcnt", "avx", "avx2", "bmi1", "bmi2",
+            "fma", "lzcnt"
+        );
+        let v4 = v3 && all!("avx512f", "avx512bw", "avx512cd", "avx512dq", "avx512vl");
+        let want = if v4 {
+            InstructionSet::Avx512
+        } else if v3 {
+            InstructionSet::Avx2
+        } else {
+            InstructionSet::Baseline
+        };
+        assert_eq!(isa, want, "the CPU's features call for {want}");
+    }
+    if let Ok(want) = std::env::var("LOBE_EXPECT_INSTRUCTION_SET") {
+        assert_eq!(isa.name(), want, "LOBE_EXPECT_INSTRUCTION_SET");
+    }
+}

@@ -85,16 +85,21 @@
 //! does the `unsafe` part (calling a `#[target_feature]` function after checking the CPU), so
 //! this crate keeps `#![forbid(unsafe_code)]`; it was chosen over hand-written intrinsics for
 //! that, and over `multiversion`, whose generated code is `unsafe` in the calling crate. Other
-//! targets, and `no_std` builds without a CPU check, run the same loop compiled for the
-//! target's own features: the portable fallback.
+//! targets run the same loop compiled for the target's own features: the portable fallback.
+//! A `no_std` build on x86 still checks the CPU (pulp reads CPUID itself). [`instruction_set`]
+//! says which path this CPU runs. Every path gives the scalar path's numbers, bit for bit:
+//! `tests/batch.rs` checks the machine's own path, and CI runs it again under an emulated CPU
+//! (QEMU's user mode) with AVX2 and with the baseline only.
 //!
 //! **Lengths.** Every slice of a call must have the same length; otherwise the call writes
 //! nothing and returns [`LengthError`]. It never panics.
 
+mod isa;
 mod kernel;
 mod lanes;
 mod models;
 
+pub use isa::{InstructionSet, instruction_set};
 pub use lanes::{Lanes, Vec2s, Vec3s, Vec3sMut, Vec4sMut};
 
 use crate::bxdf::Prepare;

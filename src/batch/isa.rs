@@ -1,0 +1,72 @@
+//! Which instruction set the batched loops run on this CPU.
+
+use core::fmt;
+
+/// The instruction set the batched calls run on, as the run-time dispatch chooses it
+/// ([`instruction_set`]).
+///
+/// Every path gives the same numbers, bit for bit (the scalar path's); only the speed
+/// differs. `tests/batch.rs` checks each one CI can run: the machine's own, and AVX2 and the
+/// baseline under an emulated CPU.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum InstructionSet {
+    /// AVX-512 (x86-64-v4).
+    Avx512,
+    /// AVX2 with FMA (x86-64-v3).
+    Avx2,
+    /// The x86 target's own features (SSE2 on the default `x86_64` target).
+    Baseline,
+    /// A target other than x86: the loops are compiled for the target's own features.
+    Target,
+}
+
+impl InstructionSet {
+    /// A short name: `"AVX-512"`, `"AVX2"`, `"baseline"` or `"target"`.
+    #[inline]
+    #[must_use]
+    pub const fn name(self) -> &'static str {
+        match self {
+            Self::Avx512 => "AVX-512",
+            Self::Avx2 => "AVX2",
+            Self::Baseline => "baseline",
+            Self::Target => "target",
+        }
+    }
+}
+
+impl fmt::Display for InstructionSet {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// The instruction set the batched calls run on this CPU: the widest of AVX-512, AVX2 with
+/// FMA and the baseline that the CPU has, on x86; [`InstructionSet::Target`] elsewhere.
+///
+/// The same check the batched calls act on, for a renderer's log or a benchmark's label.
+///
+/// ```
+/// use lobe::batch::{InstructionSet, instruction_set};
+///
+/// let isa = instruction_set();
+/// println!("lobe's batched path: {isa}");
+/// if cfg!(target_arch = "x86_64") {
+///     assert_ne!(isa, InstructionSet::Target);
+/// }
+/// ```
+#[must_use]
+pub fn instruction_set() -> InstructionSet {
+    #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+    {
+        match pulp::Arch::new() {
+            pulp::Arch::V4(_) => InstructionSet::Avx512,
+            pulp::Arch::V3(_) => InstructionSet::Avx2,
+            _ => InstructionSet::Baseline,
+        }
+    }
+    #[cfg(not(any(target_arch = "x86", target_arch = "x86_64")))]
+    {
+        InstructionSet::Target
+    }
+}
