@@ -6,8 +6,8 @@ use core::fmt;
 /// ([`instruction_set`]).
 ///
 /// Every path gives the same numbers, bit for bit (the scalar path's); only the speed
-/// differs. `tests/batch.rs` checks each one CI can run: the machine's own, and AVX2 and the
-/// baseline under an emulated CPU.
+/// differs. `tests/batch.rs` checks each one CI can run: the machine's own, and AVX2, the
+/// baseline and aarch64's under an emulated CPU.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[non_exhaustive]
 pub enum InstructionSet {

@@ -89,7 +89,7 @@
 //! A `no_std` build on x86 still checks the CPU (pulp reads CPUID itself). [`instruction_set`]
 //! says which path this CPU runs. Every path gives the scalar path's numbers, bit for bit:
 //! `tests/batch.rs` checks the machine's own path, and CI runs it again under an emulated CPU
-//! (QEMU's user mode) with AVX2 and with the baseline only.
+//! (QEMU's user mode) with AVX2 and with the baseline only, and built for aarch64.
 //!
 //! **Lengths.** Every slice of a call must have the same length; otherwise the call writes
 //! nothing and returns [`LengthError`]. It never panics.
