@@ -102,6 +102,11 @@ extern crate std;
 #[cfg(not(any(feature = "std", feature = "libm")))]
 compile_error!("lobe needs a float library: enable the `std` (default) or the `libm` feature");
 
+#[cfg(all(lobe_force_libm, not(feature = "libm")))]
+compile_error!(
+    "`--cfg lobe_force_libm` takes the float functions from libm: enable the `libm` feature"
+);
+
 #[macro_use]
 mod macros;
 

@@ -1,11 +1,13 @@
 //! `f32` math shims over `std` or `libm`, so the crate builds without the standard library.
 //!
-//! Each function calls the standard library's method, or the `libm` crate's when the `libm`
-//! feature is on (with or without `std`, as glam's `libm` feature does: so that the test
-//! suite measures the `no_std` math path too, `cargo test --features libm`). The two paths
-//! agree to within a few units in the last place, not bit for bit. The error function, its
-//! complement and its inverse are implemented here, the same on both paths, because neither
-//! `core` nor `std` offers them on stable Rust.
+//! With the `std` feature (the default) each function calls the standard library's
+//! method; without it, the `libm` crate's. The two paths agree to within a few units in the
+//! last place, not bit for bit. So that the test suite measures what a `no_std` build
+//! computes, the configuration flag `lobe_force_libm` takes the `libm` path with `std` on
+//! (`RUSTFLAGS="--cfg lobe_force_libm" cargo test --features libm`, as CI runs it): a flag
+//! and not a feature, so that no dependency's feature can switch a renderer's float
+//! functions. The error function, its complement and its inverse are implemented here, the
+//! same on both paths, because neither `core` nor `std` offers them on stable Rust.
 
 /// Declares a one-argument shim with a `std` path and a `libm` path.
 macro_rules! shim {
@@ -14,11 +16,11 @@ macro_rules! shim {
         #[inline(always)]
         #[must_use]
         pub fn $name(x: f32) -> f32 {
-            #[cfg(not(feature = "libm"))]
+            #[cfg(all(feature = "std", not(lobe_force_libm)))]
             {
                 x.$std()
             }
-            #[cfg(feature = "libm")]
+            #[cfg(any(not(feature = "std"), lobe_force_libm))]
             {
                 libm::$libm(x)
             }
@@ -57,11 +59,11 @@ shim!(/// Largest integer not above `x`.
 #[inline(always)]
 #[must_use]
 pub fn powf(x: f32, y: f32) -> f32 {
-    #[cfg(not(feature = "libm"))]
+    #[cfg(all(feature = "std", not(lobe_force_libm)))]
     {
         x.powf(y)
     }
-    #[cfg(feature = "libm")]
+    #[cfg(any(not(feature = "std"), lobe_force_libm))]
     {
         libm::powf(x, y)
     }
@@ -71,11 +73,11 @@ pub fn powf(x: f32, y: f32) -> f32 {
 #[inline(always)]
 #[must_use]
 pub fn atan2(y: f32, x: f32) -> f32 {
-    #[cfg(not(feature = "libm"))]
+    #[cfg(all(feature = "std", not(lobe_force_libm)))]
     {
         y.atan2(x)
     }
-    #[cfg(feature = "libm")]
+    #[cfg(any(not(feature = "std"), lobe_force_libm))]
     {
         libm::atan2f(y, x)
     }
@@ -86,11 +88,11 @@ pub fn atan2(y: f32, x: f32) -> f32 {
 #[inline(always)]
 #[must_use]
 pub fn sqrt_f64(x: f64) -> f64 {
-    #[cfg(not(feature = "libm"))]
+    #[cfg(all(feature = "std", not(lobe_force_libm)))]
     {
         x.sqrt()
     }
-    #[cfg(feature = "libm")]
+    #[cfg(any(not(feature = "std"), lobe_force_libm))]
     {
         libm::sqrt(x)
     }

@@ -86,10 +86,12 @@
 //! this crate keeps `#![forbid(unsafe_code)]`; it was chosen over hand-written intrinsics for
 //! that, and over `multiversion`, whose generated code is `unsafe` in the calling crate. Other
 //! targets run the same loop compiled for the target's own features: the portable fallback.
-//! A `no_std` build on x86 still checks the CPU (pulp reads CPUID itself). [`instruction_set`]
-//! says which path this CPU runs. Every path gives the scalar path's numbers, bit for bit:
-//! `tests/batch.rs` checks the machine's own path, and CI runs it again under an emulated CPU
-//! (QEMU's user mode) with AVX2 and with the baseline only, and built for aarch64.
+//! A `no_std` build on x86_64 still checks the CPU (pulp reads CPUID itself; on 32-bit x86
+//! without SSE, and in SGX enclaves, it goes by the compile-time target features).
+//! [`instruction_set`] says which path this CPU runs. Every path gives the scalar path's
+//! numbers, bit for bit: `tests/batch.rs` checks the machine's own path, and CI, where QEMU's
+//! user mode can be installed, runs it again emulating a CPU with AVX2 and one with the
+//! baseline only, and built for aarch64.
 //!
 //! **Lengths.** Every slice of a call must have the same length; otherwise the call writes
 //! nothing and returns [`LengthError`]. It never panics.
