@@ -113,7 +113,10 @@ fn sizes() {
             t[2][k].push(eval_per_lane(&gold, &c, n));
         }
     }
-    println!("batched eval, ns per lane: median [min, max] over 5 interleaved rounds\n");
+    println!(
+        "batched eval ({}), ns per lane: median [min, max] over 5 interleaved rounds\n",
+        lobe::batch::instruction_set()
+    );
     println!("| model | 4,096 lanes | 2^15 lanes | 2^20 lanes |");
     println!("| --- | --- | --- | --- |");
     for (name, row) in names.iter().zip(&mut t) {
@@ -285,7 +288,8 @@ fn main() {
             }) / 12.0;
             black_box(&o);
             println!(
-                "{{\"eval\": {eval}, \"pdf\": {pdf}, \"sample\": {sample}, \"copy\": {copy}, \"fresnel\": {fresnel_alone}, \"divide\": {divide}, \"root\": {root}}}"
+                "{{\"eval\": {eval}, \"pdf\": {pdf}, \"sample\": {sample}, \"copy\": {copy}, \"fresnel\": {fresnel_alone}, \"divide\": {divide}, \"root\": {root}, \"isa\": \"{}\"}}",
+                lobe::batch::instruction_set()
             );
         }
         Some("sizes") => sizes(),

@@ -225,6 +225,7 @@ def main():
         for _ in range(ROUNDS):
             rounds.append((time_lobe(exe, path), time_mitsuba(c)))
     print(f"\nGGX gold conductor, alpha 0.3, {n} lanes, one core, {ROUNDS} interleaved rounds")
+    print(f"lobe's batched path: {rounds[0][0]['isa']} (lobe::batch::instruction_set)")
     print("ns per lane: median [min, max] over rounds; ratio = median of per-round lobe/Mitsuba\n")
     print("| kernel (ns per lane) | lobe batched | Mitsuba 3 (llvm_ad_rgb) | ratio |")
     print("| --- | --- | --- | --- |")
