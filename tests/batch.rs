@@ -504,9 +504,10 @@ fn the_compensated_models_equal_the_scalar_path() {
 
 /// The instruction set the batched calls ran on is the one this CPU's features call for (the
 /// x86-64-v4 and v3 levels as the dispatch defines them; checked on x86_64), and is printed,
-/// so that a log shows which path the bit-for-bit checks above covered. CI runs this file again under QEMU's user
-/// mode with an emulated CPU and sets `LOBE_EXPECT_INSTRUCTION_SET` to the path that CPU must
-/// take (`AVX2`, `baseline`), so that an emulation that fell back to another path fails.
+/// so that a log shows which path the bit-for-bit checks above covered. CI runs this file
+/// again under QEMU's user mode with an emulated CPU and sets `LOBE_EXPECT_INSTRUCTION_SET` to
+/// the path that CPU must take (`AVX2`, `baseline`, `target`), so that an emulation that fell
+/// back to another path fails.
 #[test]
 fn the_instruction_set_is_the_cpus() {
     let isa = lobe::batch::instruction_set();

@@ -667,11 +667,16 @@ fn compensated_models_obey_the_laws() {
 /// at, not noise (the picks are seeded). Returns the difference in units of `ε` relative.
 fn same_entry(fresh: f32, committed: f32, what: &str) -> f64 {
     let diff = (f64::from(fresh) - f64::from(committed)).abs();
-    let relative = diff / (f64::from(f32::EPSILON) * f64::from(committed.abs()));
+    // 0/0 for two zeros: no difference.
+    let relative = if diff == 0.0 {
+        0.0
+    } else {
+        diff / (f64::from(f32::EPSILON) * f64::from(committed.abs()))
+    };
     if cfg!(lobe_force_libm) {
         assert!(
-            diff <= 4.0 * f64::from(f32::EPSILON) * f64::from(committed.abs()),
-            "{what}: re-baked {fresh}, committed {committed}, {diff:e} apart"
+            relative <= 4.0,
+            "{what}: re-baked {fresh}, committed {committed}, {relative:.2} ε relative apart"
         );
     } else {
         assert_eq!(
@@ -680,7 +685,7 @@ fn same_entry(fresh: f32, committed: f32, what: &str) -> f64 {
             "{what}: re-baked {fresh}, committed {committed}"
         );
     }
-    if diff == 0.0 { 0.0 } else { relative }
+    relative
 }
 
 /// The generator reproduces the committed tables: a sample of entries re-baked with the

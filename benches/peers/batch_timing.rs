@@ -23,6 +23,11 @@
 #[path = "../inputs.rs"]
 #[allow(dead_code)]
 mod inputs;
+// The medians and spreads of the peer bench's interleaved rounds (its round runner is unused
+// here).
+#[path = "../interleave.rs"]
+#[allow(dead_code)]
+mod interleave;
 mod lanes;
 
 use lanes::PerLane;
@@ -65,19 +70,20 @@ fn write(path: &str, n: usize) {
 /// inputs and three outputs, and one far past it.
 const SIZES: [usize; 3] = [4096, 1 << 15, 1 << 20];
 
+/// The first `n` lanes of the three coordinate arrays `c[first..first + 3]` (`first` 0 for
+/// `wo`, 3 for `wi`).
+fn vec3s(c: &[Vec<f32>], first: usize, n: usize) -> Vec3s<'_> {
+    Vec3s {
+        x: &c[first][..n],
+        y: &c[first + 1][..n],
+        z: &c[first + 2][..n],
+    }
+}
+
 /// ns per lane of `m.eval_batch` over the first `n` lanes of `c`: the median of five passes
 /// of 2²² lanes each (the batch repeated), after one untimed pass.
 fn eval_per_lane<M: Batch<Spectrum = Vec3>>(m: &M, c: &[Vec<f32>], n: usize) -> f64 {
-    let wo = Vec3s {
-        x: &c[0][..n],
-        y: &c[1][..n],
-        z: &c[2][..n],
-    };
-    let wi = Vec3s {
-        x: &c[3][..n],
-        y: &c[4][..n],
-        z: &c[5][..n],
-    };
+    let (wo, wi) = (vec3s(c, 0, n), vec3s(c, 3, n));
     let mut o: Vec<Vec<f32>> = vec![vec![0.0; n]; 3];
     let [r, g, b] = &mut o[..] else {
         unreachable!()
@@ -119,12 +125,12 @@ fn sizes() {
     );
     println!("| model | 4,096 lanes | 2^15 lanes | 2^20 lanes |");
     println!("| --- | --- | --- | --- |");
-    for (name, row) in names.iter().zip(&mut t) {
+    for (name, row) in names.iter().zip(&t) {
         let cells: Vec<String> = row
-            .iter_mut()
+            .iter()
             .map(|xs| {
-                xs.sort_by(f64::total_cmp);
-                format!("{:.2} [{:.2}, {:.2}]", xs[2], xs[0], xs[4])
+                let (median, min, max) = interleave::spread(xs);
+                format!("{median:.2} [{min:.2}, {max:.2}]")
             })
             .collect();
         println!("| {name} | {} |", cells.join(" | "));
@@ -189,15 +195,14 @@ impl pulp::WithSimd for FresnelLanes<'_> {
 /// The median of five timed passes of `f`, in ns per lane, after one untimed pass.
 fn time(n: usize, mut f: impl FnMut()) -> f64 {
     f();
-    let mut t: Vec<f64> = (0..5)
+    let t: Vec<f64> = (0..5)
         .map(|_| {
             let s = Instant::now();
             f();
             s.elapsed().as_nanos() as f64 / n as f64
         })
         .collect();
-    t.sort_by(f64::total_cmp);
-    t[2]
+    interleave::median(&t)
 }
 
 fn main() {
@@ -209,16 +214,7 @@ fn main() {
             let n = c[0].len();
             let m = gold_conductor();
             let m = black_box(&m);
-            let wo = Vec3s {
-                x: &c[0],
-                y: &c[1],
-                z: &c[2],
-            };
-            let wi = Vec3s {
-                x: &c[3],
-                y: &c[4],
-                z: &c[5],
-            };
+            let (wo, wi) = (vec3s(&c, 0, n), vec3s(&c, 3, n));
             let u = Vec2s { x: &c[6], y: &c[7] };
             let mut o: Vec<Vec<f32>> = vec![vec![0.0; n]; 7];
             let [a, b, cc, d, e, f, g] = &mut o[..] else {
