@@ -1,5 +1,5 @@
 //! Criterion benchmarks of the combinators and the stochastic layered models (issue 12), on
-//! the fixed 4,096 inputs of `benches/inputs.rs`:
+//! the fixed 4,096 inputs of `benches/common/inputs.rs`:
 //!
 //! * `eval`, `pdf` and `sample` of `Mix` (Lambert and a GGX conductor), `TwoSided` (the GGX
 //!   conductor, viewed from below for half the inputs), `DiffuseTransmission` (sides mixed),
@@ -17,6 +17,7 @@
 //! `Throughput::Elements(4096)` (time per call = criterion's time / 4,096), results through
 //! `black_box`, short measurement windows.
 
+#[path = "common/inputs.rs"]
 mod inputs;
 #[path = "common/passes.rs"]
 mod passes;

@@ -2,7 +2,7 @@
 //! register (`fresnel::conductor`, what a scalar call runs) against the same arithmetic one
 //! channel at a time (`Fresnel::eval_per_channel`, what the batched microfacet loops run and
 //! what every call ran before), alone and inside the GGX and Beckmann gold conductors, on the
-//! 4,096 inputs of `benches/inputs.rs`.
+//! 4,096 inputs of `benches/common/inputs.rs`.
 //!
 //! ```sh
 //! cargo bench --bench conductor
@@ -11,13 +11,14 @@
 //! The per-channel baseline is a [`Fresnel`] term of this file whose `eval` is
 //! `eval_per_channel`: the models built with it return the same numbers, bit for bit (checked
 //! here before timing). Criterion times each pair in the order A B A B; then the interleaved
-//! rounds of `interleave.rs` time every kernel in alternation (31 rounds) and print each one's
-//! median with its range and the median of the per-round ratios.
+//! rounds of `common/interleave.rs` time every kernel in alternation (31 rounds) and print each
+//! one's median with its range and the median of the per-round ratios.
 
 // Its `two_sided` is for the transmissive models of the other benches.
 #[allow(dead_code)]
+#[path = "common/inputs.rs"]
 mod inputs;
-#[path = "interleave.rs"]
+#[path = "common/interleave.rs"]
 mod interleave;
 #[path = "common/passes.rs"]
 mod passes;

@@ -1,5 +1,5 @@
 //! Criterion benchmarks of the shading hot loop, on the fixed 4,096 inputs of
-//! `benches/inputs.rs` (5% of the directions within 1° of the horizon):
+//! `benches/common/inputs.rs` (5% of the directions within 1° of the horizon):
 //!
 //! * `eval`, `pdf` and `sample` of every model (RGB where the model is generic over its
 //!   spectrum);
@@ -26,6 +26,7 @@
 //! timed too. Measurement windows are short (0.3 s warm-up, 1 s of 20 samples), so that the
 //! 82 benchmarks take about two minutes.
 
+#[path = "common/inputs.rs"]
 mod inputs;
 #[path = "common/passes.rs"]
 mod passes;

@@ -20,12 +20,12 @@
 //! plain visible-normal sampling (`with_bounded_reflection(false)`). The timing runs on one
 //! thread, five passes per kernel after a warm-up pass, and prints the median.
 
-#[path = "../inputs.rs"]
+#[path = "../common/inputs.rs"]
 #[allow(dead_code)]
 mod inputs;
 // The medians and spreads of the peer bench's interleaved rounds (its round runner is unused
 // here).
-#[path = "../interleave.rs"]
+#[path = "../common/interleave.rs"]
 #[allow(dead_code)]
 mod interleave;
 mod lanes;

@@ -17,9 +17,9 @@
 //! cargo bench -p lobe-peers
 //! ```
 
-#[path = "../inputs.rs"]
+#[path = "../common/inputs.rs"]
 mod inputs;
-#[path = "../interleave.rs"]
+#[path = "../common/interleave.rs"]
 mod interleave;
 mod lanes;
 
