@@ -73,9 +73,12 @@ pub(crate) const fn isqrt(n: usize) -> usize {
     r
 }
 
-/// The order (number of bands) of `n` coefficients, `√n`. Panics, at compile time where it
-/// is evaluated in a constant, when `n` is not a perfect square or is zero: an order-`L`
-/// expansion has `L²` coefficients.
+/// The order (number of bands) of `n` coefficients, `√n`.
+///
+/// # Panics
+///
+/// When `n` is not a perfect square or is zero (an order-`L` expansion has `L²`
+/// coefficients); at compile time where it is evaluated in a constant.
 ///
 /// ```
 /// assert_eq!(lobe::sh::order_of(9), 3);

@@ -287,6 +287,10 @@ pub fn chi2_sphere(
 /// [`chi2_sphere`] for a sampler that draws its own random numbers from the test's
 /// generator, for instance a BSDF sampler that needs a third number to choose a lobe.
 ///
+/// # Panics
+///
+/// As [`chi2_sphere`]: if `theta_bins`, `phi_bins`, `samples` or `integration_res` is zero.
+///
 /// ```
 /// use lobe::verify::{chi2_sphere_rng, Chi2Config};
 /// use lobe::sampling::{uniform_hemisphere, uniform_sphere_pdf};
