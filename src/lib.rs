@@ -90,6 +90,7 @@
 #![no_std]
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
+#![deny(missing_debug_implementations)]
 #![cfg_attr(docsrs, feature(doc_cfg))]
 // The docs link to the law checks of `verify` (a model's docs name the check that proves its
 // law); without the feature those links have no target. The documentation built with every

@@ -142,6 +142,7 @@ fn same_length(lens: &[usize]) -> Result<usize, LengthError> {
 /// Where [`Batch::sample_batch`] writes: the sampled directions, their values and their
 /// densities. A lane without a sample (the scalar `sample` returned `None`) has `pdf = 0`,
 /// `f = 0` and `wi = 0`.
+#[derive(Debug)]
 pub struct SampleOut<'a, S: Lanes> {
     /// The sampled directions `wi`.
     pub wi: Vec3sMut<'a>,
