@@ -6,17 +6,22 @@
 
 use core::fmt::Debug;
 use lobe::bxdf::{
-    BlinnPhong, BlinnPhongForm, BxdfSample, CoatedConductor, CoatedDiffuse, CompensatedDielectric,
-    CompensatedMicrofacet, CompensatedPlastic, Compensation, DiffuseTransmission, DisneyDiffuse,
-    EnergyPreservingOrenNayar, Glazed, Lambert, Layered, Lobes, Microfacet, Mirror, Mix, Mono,
-    OrenNayar, Phong, Plastic, RoughConductor, RoughDielectric, Sheen, SmoothDielectric,
-    ThinDielectric, TransportMode, TwoSided,
+    At, BlinnPhong, BlinnPhongForm, BxdfSample, CoatedConductor, CoatedDiffuse,
+    CompensatedDielectric, CompensatedMicrofacet, CompensatedPlastic, CompensatedState,
+    Compensation, DiffuseTransmission, DisneyDiffuse, EnergyPreservingOrenNayar, Glazed, Lambert,
+    Layered, Lobes, Microfacet, Mirror, Mix, Mono, OrenNayar, Phong, Plastic, PlasticState,
+    RoughConductor, RoughDielectric, Sheen, SmoothDielectric, ThinDielectric, TransportMode,
+    TwoSided,
 };
 use lobe::fresnel::{Conductor, Dielectric, DielectricFresnel, NoFresnel, Schlick};
+use lobe::metals::{IorSample, Metal};
 use lobe::microfacet::{
     Beckmann, BeckmannMasking, BlinnPhongNdf, Ggx, Gtr, Masking, Sampling, View,
 };
-use lobe::sh::{IrradianceQuadratic, Sh3, ShRotation, SphereQuadrature, Transfer, Zonal};
+use lobe::sh::{
+    IrradianceQuadratic, Sh3, ShEstimate, ShRotation, SphereQuadrature, Transfer, Zonal,
+};
+use lobe::tables::{AlbedoRow, DielectricAlbedo, bake::Family};
 use lobe::{Alpha, ComplexIor, Eta, Frame, Ior, ParamError, Roughness, Vec3, Vec4};
 
 /// Shared across threads, cloned into tables, printed.
@@ -35,7 +40,14 @@ fn parameters_and_errors_are_plain_values() {
     check!(plain: Alpha, Roughness, Eta, Ior, ComplexIor<f32>, ComplexIor<Vec3>, Frame);
     check!(plain: Masking, BeckmannMasking, Sampling, View, Lobes, TransportMode);
     check!(plain: BlinnPhongForm, Compensation, BxdfSample<Vec3>, BxdfSample<f32>);
-    check!(shareable: ParamError, lobe::batch::LengthError);
+    check!(plain: ParamError, lobe::batch::LengthError, lobe::batch::InstructionSet);
+}
+
+#[test]
+fn prepared_states_tables_and_metals_are_plain_values() {
+    check!(plain: At<View>, PlasticState<At<View>>);
+    check!(plain: CompensatedState<At<View>, Vec3>);
+    check!(plain: AlbedoRow, DielectricAlbedo, Family, Metal, IorSample);
 }
 
 #[test]
@@ -63,5 +75,5 @@ fn models_are_shareable() {
 #[test]
 fn spherical_harmonics_are_shareable() {
     check!(plain: Sh3<Vec3>, Zonal<3>, IrradianceQuadratic<Vec3>);
-    check!(shareable: ShRotation<9>, Transfer<9, Vec3>, SphereQuadrature);
+    check!(shareable: ShRotation<9>, Transfer<9, Vec3>, SphereQuadrature, ShEstimate<9>);
 }
