@@ -59,18 +59,8 @@ pub(crate) const fn band_range(l: usize) -> core::ops::Range<usize> {
 #[inline]
 #[must_use]
 pub const fn band_of(i: usize) -> (usize, isize) {
-    let l = isqrt(i);
+    let l = i.isqrt();
     (l, i as isize - (l * (l + 1)) as isize)
-}
-
-/// `⌊√n⌋` for whole numbers.
-#[must_use]
-pub(crate) const fn isqrt(n: usize) -> usize {
-    let mut r = 0;
-    while (r + 1) * (r + 1) <= n {
-        r += 1;
-    }
-    r
 }
 
 /// The order (number of bands) of `n` coefficients, `√n`.
@@ -85,7 +75,7 @@ pub(crate) const fn isqrt(n: usize) -> usize {
 /// ```
 #[must_use]
 pub const fn order_of(n: usize) -> usize {
-    let l = isqrt(n);
+    let l = n.isqrt();
     assert!(
         n > 0 && l * l == n,
         "an SH coefficient count must be a non-zero perfect square (order²)"
@@ -185,7 +175,7 @@ pub fn basis_recurrence(w: Vec3, out: &mut [f32]) {
     if len == 0 {
         return;
     }
-    let order = isqrt(len - 1) + 1; // bands touched, the last possibly partial
+    let order = (len - 1).isqrt() + 1; // bands touched, the last possibly partial
     let z = w.z;
     let mut put = |l: usize, m: usize, q: f32, re: f32, im: f32| {
         let centre = l * (l + 1);
@@ -313,6 +303,17 @@ mod tests {
         }
         assert_eq!(order_of(1), 1);
         assert_eq!(order_of(81), 9);
+    }
+
+    #[test]
+    fn band_and_order_hold_at_the_top_of_usize() {
+        // The largest square a usize holds, its neighbours, and usize::MAX itself: an integer
+        // square root that squared its candidate would overflow here.
+        let top = (1_usize << (usize::BITS / 2)) - 1;
+        assert_eq!(order_of(top * top), top);
+        assert_eq!(band_of(top * top - 1), (top - 1, top as isize - 1));
+        assert_eq!(band_of(usize::MAX).0, top);
+        assert!(std::panic::catch_unwind(|| order_of(usize::MAX)).is_err());
     }
 
     #[test]
