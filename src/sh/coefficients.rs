@@ -10,7 +10,9 @@ use glam::Vec3;
 ///
 /// `N` is the number of coefficients, the square of the order: `Sh<9, S>` holds bands 0–2
 /// (the irradiance order), `Sh<16, S>` bands 0–3. A count that is not a perfect square is
-/// refused at compile time. `S` is the carrier: `f32`, or an RGB `Vec3` with one expansion
+/// refused at compile time by [`new`](Self::new), [`ORDER`](Self::ORDER) and every method
+/// that uses them (the public field lets a struct literal of such a count compile, but
+/// nothing that needs its order). `S` is the carrier: `f32`, or an RGB `Vec3` with one expansion
 /// per channel. No allocation: the coefficients are an inline array, `Copy`.
 ///
 /// ```
@@ -61,7 +63,11 @@ impl<const N: usize, S: Spectrum> Sh<N, S> {
         Self::new([S::zero(); N])
     }
 
-    /// The coefficient `f_lm`; zero outside the expansion's bands. Precondition `|m| ≤ l`.
+    /// The coefficient `f_lm`; zero outside the expansion's bands. Precondition `|m| ≤ l`:
+    /// otherwise the coefficient of another band.
+    ///
+    /// # Panics
+    /// For `l = 0` and `m < 0` (an index out of bounds).
     #[inline]
     #[must_use]
     pub fn get(&self, l: usize, m: isize) -> S {
@@ -165,8 +171,10 @@ impl<const N: usize, S: Spectrum> Sh<N, S> {
         }))
     }
 
-    /// Channel `c` of every coefficient, as a monochrome expansion. Precondition:
-    /// `c < S::CHANNELS` (panics otherwise).
+    /// Channel `c` of every coefficient, as a monochrome expansion.
+    ///
+    /// # Panics
+    /// If `c ≥ S::CHANNELS`.
     #[must_use]
     pub fn channel(&self, c: usize) -> Sh<N, f32> {
         Sh::new(core::array::from_fn(|i| self.coeffs[i].channel(c)))

@@ -24,14 +24,20 @@ impl<const N: usize> ShEstimate<N> {
     }
 
     /// The largest `|z|`-score of the estimates against `exact`, in standard errors (see
-    /// [`Estimate::z_score`]).
+    /// [`Estimate::z_score`]); NaN when any coefficient's score is NaN (an estimate of fewer
+    /// than two samples, or a NaN mean or target), so that a check `z < k` fails, as
+    /// [`within`](Self::within) does.
     #[must_use]
     pub fn max_z_score(&self, exact: &Sh<N, f32>) -> f64 {
         self.coeffs
             .iter()
             .zip(&exact.coeffs)
             .map(|(e, &x)| e.z_score(f64::from(x)).abs())
-            .fold(0.0, f64::max)
+            // Not `f64::max`, which drops a NaN and would report agreement.
+            .fold(
+                0.0,
+                |worst, z| if z > worst || z.is_nan() { z } else { worst },
+            )
     }
 
     /// Whether every coefficient is within `k_sigma` standard errors of `exact` (see

@@ -23,12 +23,12 @@ use glam::Vec3;
 /// `max(cos θ, 0)` or a BRDF lobe cut by the horizon.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct SphereQuadrature {
-    /// Gauss–Legendre nodes in `cos θ` (on each hemisphere when split).
-    pub n_theta: usize,
-    /// Equally spaced azimuths.
-    pub n_phi: usize,
+    /// Gauss–Legendre nodes in `cos θ` (on each hemisphere when split); at least 1.
+    n_theta: usize,
+    /// Equally spaced azimuths; at least 1.
+    n_phi: usize,
     /// Nodes placed on each hemisphere separately.
-    pub split: bool,
+    split: bool,
 }
 
 impl SphereQuadrature {
@@ -69,6 +69,28 @@ impl SphereQuadrature {
             split: true,
             ..self
         }
+    }
+
+    /// The Gauss–Legendre nodes in `cos θ` (on each hemisphere when split); at least 1.
+    #[inline]
+    #[must_use]
+    pub const fn n_theta(&self) -> usize {
+        self.n_theta
+    }
+
+    /// The equally spaced azimuths; at least 1.
+    #[inline]
+    #[must_use]
+    pub const fn n_phi(&self) -> usize {
+        self.n_phi
+    }
+
+    /// Whether the `cos θ` nodes are placed on each hemisphere separately
+    /// ([`split_at_equator`](Self::split_at_equator)).
+    #[inline]
+    #[must_use]
+    pub const fn is_split(&self) -> bool {
+        self.split
     }
 
     /// The number of nodes.

@@ -288,6 +288,10 @@ impl<const N: usize> ShRotation<N> {
     }
 
     /// The entry `M^l_mn`. Preconditions: `l` below the order, `|m|, |n| ≤ l`.
+    ///
+    /// # Panics
+    /// If `l` is not below the order or `|m| > l`; an `|n| > l` reads a neighbouring row, or
+    /// panics at the block's ends.
     #[must_use]
     pub fn entry(&self, l: usize, m: isize, n: isize) -> f32 {
         let li = l as isize;
