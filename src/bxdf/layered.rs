@@ -74,8 +74,10 @@ const TAG_SAMPLE: u64 = 0x7361_6d70;
 /// each hit of the top from inside the density of leaving there toward `wi` (a rough top),
 /// or at each event the density of the direction that refracts into `wi` times the chance of
 /// reaching and crossing the top and the refraction's Jacobian `cos θi / (η² cos θt)` (a
-/// smooth top). Walks stop after `max_depth` events; `eval` and `pdf` count the same paths
-/// as `sample`.
+/// smooth top); its walk enters a smooth top along the refracted direction, weighted by the
+/// chance `1 − F(wo)` of crossing, instead of drawing the crossing (an estimate that drew it
+/// would be zero whenever the top reflected, and a sample's `pdf` must be positive). Walks
+/// stop after `max_depth` events; `eval` and `pdf` count the same paths as `sample`.
 ///
 /// **Determinism and variance.** Each estimate draws from a PCG32 generator seeded with a
 /// hash of its arguments, so `eval(wo, wi)` repeats itself exactly (a reciprocity pair is
@@ -599,15 +601,30 @@ impl<T: LayerInterface, B: Bxdf> Layered<T, B> {
     /// A smooth top adds, at each such event, the density of the one direction that refracts
     /// into `wi`.
     fn pdf_walk(&self, at: &At<T::Prepared>, wi: Vec3, rng: &mut WalkRng) -> f32 {
-        let (u, uc) = (rng.next_vec2(), rng.next_f32());
-        let Some(s0) = self
-            .top
-            .sample_prepared(&at.state, u, uc)
-            .filter(|s| usable(s) && s.wi.z < 0.0)
-        else {
-            return 0.0;
-        };
         let smooth_top = self.smooth_top();
+        // The entry. A smooth top transmits toward the refracted direction with probability
+        // 1 − F(wo): the walk takes that branch and weighs its density by the probability
+        // (the expectation over the top's choice), rather than drawing the choice and counting
+        // zero when the entry reflects. The estimate stays unbiased, and a sample's `pdf`
+        // (which must be positive) is not zero as often as the top reflects. A rough top's
+        // entry is drawn.
+        let (w0, entry) = if smooth_top {
+            let eta = self.top.eta();
+            match refract_away(at.wo, Vec3::Z, eta) {
+                Some(w) if w.z < 0.0 => (w, 1.0 - dielectric(at.wo.z, eta)),
+                _ => return 0.0,
+            }
+        } else {
+            let (u, uc) = (rng.next_vec2(), rng.next_f32());
+            match self
+                .top
+                .sample_prepared(&at.state, u, uc)
+                .filter(|s| usable(s) && s.wi.z < 0.0)
+            {
+                Some(s0) => (s0.wi, 1.0),
+                None => return 0.0,
+            }
+        };
         // For a smooth top: the internal direction that refracts into wi, travelling up.
         // For a rough one: a direction inside sampled from wi, with the top's density of
         // leaving toward wi from it.
@@ -629,7 +646,7 @@ impl<T: LayerInterface, B: Bxdf> Layered<T, B> {
         let mut beta = B::Spectrum::one();
         let mut walk = Walk {
             z: self.thickness,
-            w: s0.wi,
+            w: w0,
             at_top: true,
         };
         // The density with which the last event sampled the walk's direction (infinite for a
@@ -707,7 +724,7 @@ impl<T: LayerInterface, B: Bxdf> Layered<T, B> {
                 }
             }
         }
-        density
+        density * entry
     }
 }
 
@@ -777,7 +794,10 @@ impl<T: LayerInterface, B: Bxdf> Prepare for Layered<T, B> {
         let (wi, beta, path_pdf, lobe) = self.walk_sample(at, u, uc)?;
         // A sample from a lobe with a density carries an independent estimate of the density
         // at its direction (what `pdf` returns, for a renderer's MIS) and the value that keeps
-        // its weight the walk's; a delta sample, the path's probability.
+        // its weight the walk's; a delta sample, the path's probability. Where the estimate is
+        // zero (a walk that found no way out toward `wi`: a base whose sampled lobe has no
+        // density, a walk of one event), the path's density stands in, as the sample's `pdf`
+        // must be positive: a bias only there.
         let estimate = if lobe.is_specular() {
             0.0
         } else {
