@@ -6,7 +6,7 @@ mod common;
 
 use common::k_sigma;
 use common::laws::{Model, assert_every_model_obeys_every_law};
-use lobe::bxdf::{Glazed, Microfacet, Plastic};
+use lobe::bxdf::{Bxdf, Glazed, Microfacet, Plastic};
 use lobe::fresnel::Dielectric;
 use lobe::microfacet::{Beckmann, Ggx, Masking};
 use lobe::verify::{BxdfCheck, albedo_sampled};
@@ -58,6 +58,40 @@ fn glazed_albedo_matches_its_closed_form() {
             }
         }
     }
+}
+
+/// The glazed diffuse lobe's albedo is `(1 − F(cos θo)) ρ` — what `F̄` in its normalisation
+/// is for — for a coat denser than the outside and for one less dense (`η < 1`: total internal
+/// reflection beyond the critical angle puts a kink in `F` that `F̄`'s quadrature must go
+/// round; integrated straight across it, a white base reflected up to 1.03 at `η = 1/2.4`).
+/// The albedo is integrated in `f64` by the midpoint rule in `μ = cos θi` (the lobe does not
+/// depend on the azimuth; 2¹⁶ nodes, an error below 1e-8 at the kink), `F` is the crate's
+/// exact Fresnel term (pinned against Mitsuba by `tests/fresnel.rs`; what is tested here is the
+/// normalisation), and the bound 1e-5 covers the `f32` evaluations (1e-6 relative) and `F̄`'s
+/// quadrature (2.5e-7).
+#[test]
+fn glazed_diffuse_albedo_is_exact_on_both_sides_of_one() {
+    let mut worst = 0.0_f64;
+    for e in [1.5f32, 1.0 / 1.33, 1.0 / 1.5, 1.0 / 2.4] {
+        let eta = Eta::new(e).unwrap();
+        let g = Glazed::new(1.0f32, eta).unwrap();
+        for theta in [0.0f32, 20.0, 40.0] {
+            let wo = common::dir(theta, 0.2);
+            let n = 1 << 16;
+            let sum: f64 = (0..n)
+                .map(|k| {
+                    let mu = (k as f64 + 0.5) / f64::from(n);
+                    let wi = lobe::Vec3::new((1.0 - mu * mu).sqrt() as f32, 0.0, mu as f32);
+                    f64::from(g.eval(wo, wi)) * mu
+                })
+                .sum();
+            let albedo = 2.0 * core::f64::consts::PI * sum / f64::from(n);
+            let want = 1.0 - f64::from(lobe::fresnel::dielectric(wo.z, eta));
+            eprintln!("glazed η {e:.4}, θo {theta}°: diffuse albedo {albedo:.7}, want {want:.7}");
+            worst = worst.max((albedo - want).abs());
+        }
+    }
+    assert!(worst < 1e-5, "largest error {worst:.2e}");
 }
 
 /// The plastic's tabulated coat albedo, less its margin, agrees with a Monte Carlo estimate of
