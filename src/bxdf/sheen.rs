@@ -60,8 +60,9 @@ const FIT_1: [f32; 5] = [21.5473, 3.82987, 0.19823, -1.97760, -4.32054];
 /// error is 1.8%).
 ///
 /// Laws: positive, reciprocal (`D` and `G` are symmetric, to round-off), sampler and pdf
-/// agree; energy conserving for `r ≥ 0.1` (the albedo stays below 0.93) and not at grazing
-/// angles for `r ≤ 0.03` (above).
+/// agree; energy conserving for `r ≥ 0.1` (the table's albedo peaks at grazing incidence,
+/// below 0.95: 0.941 for `r = 1`, 0.897 for `r = 0.1`), and not at grazing angles below about
+/// `r = 0.067`, where the peak passes 1 (1.04 for `r = 0.06`; above).
 ///
 /// ```
 /// use lobe::bxdf::{Bxdf, Sheen};

@@ -280,11 +280,7 @@ fn dielectric_rows(
     let n = eta.get();
     let (flip, n) = if n < 1.0 { (true, 1.0 / n) } else { (false, n) };
     let at = locate_eta(n).ok_or_else(|| {
-        ParamError::new(
-            "eta (compensated)",
-            eta.get(),
-            "[0.3333, 0.9901] ∪ [1.01, 3]",
-        )
+        ParamError::new("eta (compensated)", eta.get(), "[1/3, 1/1.01] ∪ [1.01, 3]")
     })?;
     let (o, i) = (
         AlbedoRow::from_dielectric(outside, alpha, at)?,
