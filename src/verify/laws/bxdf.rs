@@ -422,12 +422,14 @@ impl ReciprocityPair {
         }
     }
 
-    /// True when the sides agree within `rel_tol` relative error plus the round-off
-    /// allowance.
+    /// True when both sides are finite and agree within `rel_tol` relative error plus the
+    /// round-off allowance (an infinite side would meet its own infinite allowance).
     #[must_use]
     pub fn holds(&self, rel_tol: f64) -> bool {
         let (a, b) = (self.forward, self.backward);
-        (a - b).abs() <= rel_tol * a.abs().max(b.abs()) + self.round_off
+        a.is_finite()
+            && b.is_finite()
+            && (a - b).abs() <= rel_tol * a.abs().max(b.abs()) + self.round_off
     }
 }
 
@@ -636,8 +638,8 @@ pub fn reciprocity<B: Bxdf + ?Sized>(bxdf: &B, config: &Config) -> LawReport {
                 t.failures += 1;
             }
             let scale = r.forward.abs().max(r.backward.abs());
-            if r.forward.is_nan() || r.backward.is_nan() {
-                // Not a number: no figure can stand for it (`max` would drop it).
+            if !(r.forward.is_finite() && r.backward.is_finite()) {
+                // Not a finite number: no figure can stand for it (`max` would drop a NaN).
                 t.worst = f64::NAN;
             } else if scale > 1e3 * SUBNORMAL_FLOOR && r.round_off - SUBNORMAL_FLOOR <= tol * scale
             {
@@ -898,14 +900,18 @@ pub fn check_bxdf<B: Bxdf + ?Sized>(name: &str, bxdf: &B, config: &Config) -> Re
     let mut laws = Vec::new();
     laws.push(positivity(bxdf, config));
     // A model made only of delta lobes has `eval = 0` everywhere: nothing to compare.
-    if bxdf.lobes().is_non_specular() {
+    let density = bxdf.lobes().is_non_specular();
+    if density {
         laws.push(reciprocity(bxdf, config));
     }
-    let (bound, agreement) = energy_bound(bxdf, config);
+    // The statistical laws (the energy bound, the sampler's chi-square) share the run's
+    // significance, so that it is the chance of failing a correct model for the whole run.
+    let shared = config.shared_among(1 + usize::from(density));
+    let (bound, agreement) = energy_bound(bxdf, &shared);
     laws.push(bound);
     laws.extend(agreement);
-    if bxdf.lobes().is_non_specular() {
-        laws.push(sampling_chi2(bxdf, config));
+    if density {
+        laws.push(sampling_chi2(bxdf, &shared));
         laws.push(consistency(bxdf, config));
     }
     Report {
@@ -918,6 +924,37 @@ pub fn check_bxdf<B: Bxdf + ?Sized>(name: &str, bxdf: &B, config: &Config) -> Re
 mod tests {
     use super::*;
     use crate::bxdf::Lambert;
+
+    /// An infinite side never holds, though its relative error is NaN and its allowance
+    /// could be infinite too.
+    #[test]
+    fn an_infinite_side_breaks_reciprocity() {
+        for (forward, backward) in [
+            (f64::INFINITY, 0.5),
+            (0.5, f64::INFINITY),
+            (f64::INFINITY, f64::INFINITY),
+        ] {
+            let pair = ReciprocityPair {
+                forward,
+                backward,
+                round_off: 1e-30,
+            };
+            assert!(!pair.holds(1e-5), "{pair:?}");
+            let pair = ReciprocityPair {
+                round_off: f64::INFINITY,
+                ..pair
+            };
+            assert!(!pair.holds(1e-5), "{pair:?}");
+        }
+        assert!(
+            ReciprocityPair {
+                forward: 0.5,
+                backward: 0.5,
+                round_off: 0.0
+            }
+            .holds(1e-5)
+        );
+    }
 
     fn report(passed: bool, figure: f64) -> LawReport {
         LawReport {

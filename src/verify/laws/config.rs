@@ -97,6 +97,19 @@ impl Default for Config {
 }
 
 impl Config {
+    /// The same configuration with the significance of one of `laws` statistical laws that
+    /// share the run's ([`sidak`](crate::verify::sidak)): what [`check_bxdf`] gives each, so
+    /// that [`significance`](Self::significance) holds for the whole run.
+    ///
+    /// [`check_bxdf`]: crate::verify::check_bxdf
+    #[must_use]
+    pub fn shared_among(&self, laws: usize) -> Self {
+        Self {
+            significance: crate::verify::sidak(self.significance, laws),
+            ..self.clone()
+        }
+    }
+
     /// The viewer directions of the BSDF checks for `bxdf`: [`Config::directions`], or the
     /// default set.
     #[must_use]

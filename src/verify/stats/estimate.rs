@@ -57,9 +57,13 @@ impl Estimate {
     ///
     /// When the standard error is `0` (all samples identical) the score is `0` if the mean
     /// equals `target` up to [`round_off`](Self::round_off), and `±∞` otherwise. NaN when
-    /// the estimate is undefined (`n < 2`).
+    /// the estimate is undefined (`n < 2`) or the mean, the standard error or `target` is not
+    /// finite (an infinite sample makes the mean infinite and the spread NaN: no claim).
     #[must_use]
     pub fn z_score(&self, target: f64) -> f64 {
+        if !self.is_finite_against(target) {
+            return f64::NAN;
+        }
         let diff = self.mean - target;
         if self.std_err == 0.0 {
             if diff.abs() <= self.round_off(target) {
@@ -77,10 +81,19 @@ impl Estimate {
     ///
     /// The [`round_off`](Self::round_off) term is what lets a zero-variance estimate pass
     /// against an exact target; it is negligible next to any real standard error. `false`
-    /// when any of the numbers is NaN (in particular for `n < 2`).
+    /// when any of the numbers is NaN (in particular for `n < 2`) or infinite (an infinite
+    /// mean would otherwise meet its own infinite round-off allowance).
     #[must_use]
     pub fn within(&self, target: f64, k_sigma: f64) -> bool {
-        (self.mean - target).abs() <= k_sigma * self.std_err + self.round_off(target)
+        self.is_finite_against(target)
+            && (self.mean - target).abs() <= k_sigma * self.std_err + self.round_off(target)
+    }
+
+    /// The mean, the standard error and `target` are all finite: the comparisons mean
+    /// something.
+    #[inline]
+    fn is_finite_against(&self, target: f64) -> bool {
+        self.mean.is_finite() && self.std_err.is_finite() && target.is_finite()
     }
 
     /// The relative standard error `std_err / |mean|` (infinite for a zero mean with a
@@ -237,13 +250,17 @@ impl Accumulator {
         self.n == 0
     }
 
-    /// The unbiased sample variance `s² = Σ (x − x̄)² / (n − 1)`; NaN for `n < 2`.
+    /// The unbiased sample variance `s² = Σ (x − x̄)² / (n − 1)`; NaN for `n < 2`, and NaN
+    /// when a sample was infinite or NaN (the running sum of squares is then NaN, and stays
+    /// so: `f64::max` would have turned it into a spread of zero).
     #[must_use]
     pub fn variance(&self) -> f64 {
         if self.n < 2 {
             f64::NAN
         } else {
-            self.m2.max(0.0) / (self.n - 1) as f64
+            // Round-off can leave the sum of squares a hair below zero; a NaN stays NaN.
+            let m2 = if self.m2 < 0.0 { 0.0 } else { self.m2 };
+            m2 / (self.n - 1) as f64
         }
     }
 
@@ -289,6 +306,24 @@ mod tests {
         assert_eq!(e.n, 10);
         assert!((e.mean - 5.5).abs() < 1e-15);
         assert!((e.std_err - (55.0_f64 / 60.0).sqrt()).abs() < 1e-15);
+    }
+
+    /// An infinite sample, or an infinite target, makes no claim: the spread is NaN (not the
+    /// zero that `f64::max` made of it) and every comparison fails, where an infinite mean
+    /// used to meet its own infinite round-off allowance.
+    #[test]
+    fn infinities_make_no_claim() {
+        let e = Estimate::from_samples([1.0, 1.0, 1.0, f64::INFINITY]);
+        assert!(e.std_err.is_nan(), "{e}");
+        assert!(!e.within(1.0, 3.0) && !e.within(1e9, 3.0) && !e.within(f64::INFINITY, 3.0));
+        assert!(e.z_score(1.0).is_nan());
+        let finite = Estimate::from_samples([1.0, 2.0, 3.0]);
+        assert!(!finite.within(f64::INFINITY, 3.0) && finite.z_score(f64::INFINITY).is_nan());
+        // A spread that overflows is not finite either.
+        let huge = Estimate::from_samples([-1e200, 1e200]);
+        assert!(!huge.within(0.0, 3.0), "{huge}");
+        // Finite estimates still compare as before.
+        assert!(finite.within(2.0, 1.0) && finite.z_score(2.0) == 0.0);
     }
 
     #[test]
