@@ -94,6 +94,33 @@ fn glazed_diffuse_albedo_is_exact_on_both_sides_of_one() {
     assert!(worst < 1e-5, "largest error {worst:.2e}");
 }
 
+/// A compensated plastic's samples carry the lobe label of the coat's lobe that drew them:
+/// with a black base every sample is the coat's, and the compensated coat draws some from its
+/// multiple-scattering lobe, which is diffuse (about 7% at `α = 0.8`, `η = 1.5`); the plastic
+/// once labelled every coat sample glossy.
+#[test]
+fn compensated_plastic_samples_keep_the_coats_lobe() {
+    let plastic = Plastic::compensated(0.0f32, Ggx::isotropic(a(0.8)), glass()).unwrap();
+    let mut rng = lobe::verify::Pcg32::new(5, 9);
+    let wo = common::dir(40.0, 0.1);
+    let (mut diffuse, mut glossy) = (0_u32, 0_u32);
+    for _ in 0..20_000 {
+        if let Some(s) = plastic.sample(wo, rng.next_vec2(), rng.next_f32()) {
+            if s.lobe == lobe::bxdf::Lobes::DIFFUSE_REFLECTION {
+                diffuse += 1;
+            } else {
+                assert_eq!(s.lobe, lobe::bxdf::Lobes::GLOSSY_REFLECTION);
+                glossy += 1;
+            }
+        }
+    }
+    eprintln!("compensated plastic, black base: {diffuse} diffuse, {glossy} glossy samples");
+    assert!(
+        diffuse > 0 && glossy > 0,
+        "{diffuse} diffuse, {glossy} glossy"
+    );
+}
+
 /// The plastic's tabulated coat albedo, less its margin, agrees with a Monte Carlo estimate of
 /// the coat's albedo: the margin covers the table's error, so the sum cannot exceed 1.
 #[test]

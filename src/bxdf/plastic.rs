@@ -317,9 +317,10 @@ impl<D, S: Spectrum, C: Prepare<Spectrum = f32>> Plastic<D, S, C> {
         // The coat's value and density at wi: from its own sample when it drew wi (the same
         // numbers its eval and pdf give), else evaluated together with one D.
         let (wi, coat_f, coat_pdf, lobe) = if uc < st.p_coat {
-            // The coat's own lobe choice (a compensated coat has two), from what is left of uc.
+            // The coat's own lobe choice (a compensated coat has two, its multiple-scattering
+            // lobe diffuse), from what is left of uc, and the coat's label for it.
             let s = O::sample(&self.coat, &st.coat, u, reuse_uniform(uc, 0.0, st.p_coat))?;
-            (s.wi, s.f, s.pdf, Lobes::GLOSSY_REFLECTION)
+            (s.wi, s.f, s.pdf, s.lobe)
         } else {
             let wi = cosine_hemisphere(u);
             let (f, pdf) = O::eval_pdf(&self.coat, &st.coat, wi);

@@ -35,6 +35,19 @@ use glam::{Vec2, Vec3};
 /// cosines so that it is symmetric); in importance mode the albedo is the fraction of flux
 /// scattered, at most 1, and single scattering loses some with roughness: at `θo = 30°`,
 /// η = 1.5, 0.99994 (`α = 0.02`), 0.983 (0.3), 0.854 (1).
+///
+/// **An index-matched interface loses light.** At `η = 1`, and within about 1e-6 of it,
+/// refraction sends `wi` to `−wo`, where the generalised half vector `wo + η' wi` is rounding
+/// noise: some samples give no direction, the rest finite values of no meaning. Measured by
+/// `tests/bxdf_rough_dielectric.rs` (importance albedo at `θo = 30°`): 0.631 at `α = 0.01`
+/// and 0.507 at `α = 1` for `η = 1`; 1.000 and 0.652 for the `f32` just below 1. The energy
+/// bound still holds (the test checks it). An interface between equal indices is invisible:
+/// leave it out of the scene, or use a [`ThinDielectric`](super::ThinDielectric) or a smooth
+/// model, which pass straight through at `η = 1` (pbrt-v4 turns a rough dielectric of
+/// `η = 1` into that pass-through; this model does not, yet).
+///
+/// With [`Masking::HeightCorrelated`] (the default) a transmitted pair gets the reflection
+/// form `1/(1 + Λ(wo) + Λ(wi))`, as in pbrt-v4 and Mitsuba 3.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RoughDielectric<D> {
     distribution: D,

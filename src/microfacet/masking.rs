@@ -12,7 +12,11 @@ use glam::Vec3;
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum Masking {
     /// Height-correlated Smith, `1 / (1 + Λ(wo) + Λ(wi))` (Heitz 2014, eq. 99): the default,
-    /// and the most accurate of the three for a random height field.
+    /// and the most accurate of the three for a random height field. That is the form for a
+    /// reflected pair; [`RoughDielectric`](crate::bxdf::RoughDielectric) uses it for a
+    /// transmitted pair too, as pbrt-v4 and Mitsuba 3 do (Heitz derives another
+    /// height-correlated form for transmission, a Beta function of `1 + Λ(wo)` and
+    /// `1 + Λ(wi)`).
     #[default]
     HeightCorrelated,
     /// Separable Smith, `G1(wo) G1(wi)` (Heitz 2014, eq. 98): Mitsuba 3's choice.
