@@ -35,7 +35,7 @@ use common::buggy_ggx::{BuggyNdf, NdfBug};
 
 /// Harness runs in this file (one per entry, plus the correct counterparts): the family's
 /// 1% chance of failing a correct law is shared among them.
-const RUNS: usize = 35;
+const RUNS: usize = 36;
 
 /// A small but sufficient budget: every bug below is caught by a wide margin at it.
 fn config() -> Config {
@@ -599,6 +599,64 @@ fn sample_below_the_horizon_fails_chi_square_zero_bins() {
     let r = chi2_bxdf(&model, Vec3::Z, &chi);
     eprintln!("{r}");
     assert!(r.zero_bin_hits > 1_000, "{r}");
+}
+
+/// **A sampler that misses half of a lobe, beside a mirror.** A mirror of reflectance 0.4 and
+/// a diffuse lobe `0.9/π` whose sampler and `pdf` cover only `x > 0`: the two agree, so the
+/// chi-square and consistency hold, and the sampled albedo (0.4 + 0.45) stays under 1, while
+/// the model reflects 1.3. → **albedo estimators**, which compare the diffuse part by the
+/// sampler (0.45) and by cosine sampling (0.9); the check once skipped every model with a
+/// delta lobe.
+struct HalfSampledBesideAMirror;
+
+impl Bxdf for HalfSampledBesideAMirror {
+    type Spectrum = f32;
+
+    fn eval(&self, wo: Vec3, wi: Vec3) -> f32 {
+        if wo.z > 0.0 && wi.z > 0.0 {
+            0.9 / PI
+        } else {
+            0.0
+        }
+    }
+
+    fn sample(&self, wo: Vec3, u: Vec2, uc: f32) -> Option<BxdfSample<f32>> {
+        if !(wo.z > 0.0) {
+            return None;
+        }
+        if uc < 0.4 {
+            let wi = reflect_away(wo, Vec3::Z);
+            // (No mirror sample in the tangent plane, where 0.4 / cos θ is infinite.)
+            return (wi.z > 1e-30)
+                .then(|| reflection(wi, 0.4 / wi.z, 0.4, Lobes::SPECULAR_REFLECTION))
+                .flatten();
+        }
+        let mut wi = cosine_hemisphere(u);
+        wi.x = wi.x.abs();
+        reflection(wi, 0.9 / PI, self.pdf(wo, wi), Lobes::DIFFUSE_REFLECTION)
+    }
+
+    fn pdf(&self, wo: Vec3, wi: Vec3) -> f32 {
+        if wo.z > 0.0 && wi.z > 0.0 && wi.x >= 0.0 {
+            0.6 * 2.0 * cosine_hemisphere_pdf(wi.z)
+        } else {
+            0.0
+        }
+    }
+
+    fn lobes(&self) -> Lobes {
+        Lobes::SPECULAR_REFLECTION | Lobes::DIFFUSE_REFLECTION
+    }
+}
+
+#[test]
+fn half_sampled_lobe_beside_a_mirror_fails_the_albedo_estimators() {
+    let report = check_caught(
+        "mirror 0.4 + diffuse 0.9, half sampled",
+        &HalfSampledBesideAMirror,
+        &[Law::AlbedoEstimators],
+    );
+    assert!(figure(&report, Law::EnergyBound) < 0.9, "{report}");
 }
 
 /// **14. `sample().f ≠ eval`** (the sampler's copy of the value uses separable masking,

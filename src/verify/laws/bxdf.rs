@@ -239,17 +239,41 @@ where
 
 /// [`albedo_sampled`] of every channel, on the same samples.
 fn albedo_sampled_channels<B: Bxdf + ?Sized>(bxdf: &B, wo: Vec3, config: &Config) -> Vec<Estimate> {
+    albedo_sampled_parts(bxdf, wo, config, false).0
+}
+
+/// [`albedo_sampled_channels`], and with `density_part` the albedo of the lobes with a
+/// density on the same samples (a delta sample counting zero); empty otherwise.
+fn albedo_sampled_parts<B: Bxdf + ?Sized>(
+    bxdf: &B,
+    wo: Vec3,
+    config: &Config,
+    density_part: bool,
+) -> (Vec<Estimate>, Vec<Estimate>) {
     let mut rng = Pcg32::new(config.seed, STREAM);
     let mut acc = PerChannel::new(bxdf);
+    let mut part = PerChannel::new(bxdf);
     for _ in 0..config.albedo_samples {
         let u = rng.next_vec2();
         let uc = rng.next_f32();
-        match bxdf.sample(wo, u, uc) {
+        let sample = bxdf.sample(wo, u, uc);
+        match sample {
             Some(s) => acc.push(s.weight(), |w| w),
             None => acc.push_zero(),
         }
+        if density_part {
+            match sample {
+                Some(s) if !s.is_specular() => part.push(s.weight(), |w| w),
+                _ => part.push_zero(),
+            }
+        }
     }
-    acc.finish()
+    let part = if density_part {
+        part.finish()
+    } else {
+        Vec::new()
+    };
+    (acc.finish(), part)
 }
 
 /// The directional albedo estimated independently of the model's sampler: `wi` cosine-
@@ -301,10 +325,15 @@ pub struct Albedo {
     pub sampled: Estimate,
     /// By cosine sampling, or `None` for a model with delta lobes (which it cannot see).
     pub cosine: Option<Estimate>,
+    /// For a model with delta lobes and lobes with a density both: the albedo of the lobes
+    /// with a density, by the model's sampler (on the samples of `sampled`, a delta sample
+    /// counting zero) and by cosine sampling. `None` for other models.
+    pub density_lobes: Option<(Estimate, Estimate)>,
 }
 
 /// The directional albedo `∫ f(wo, wi) |cos θi| dωi` at `wo` by the model's sampler and, for
-/// a model without delta lobes, by cosine sampling ([`albedo_sampled`], [`albedo_cosine`]).
+/// a model without delta lobes, by cosine sampling ([`albedo_sampled`], [`albedo_cosine`]);
+/// for a model with both kinds of lobe, the part of the lobes with a density by both.
 #[must_use]
 pub fn albedo<B: Bxdf<Spectrum = f32> + ?Sized>(bxdf: &B, wo: Vec3, config: &Config) -> Albedo {
     albedo_channels(bxdf, wo, config)[0]
@@ -312,14 +341,22 @@ pub fn albedo<B: Bxdf<Spectrum = f32> + ?Sized>(bxdf: &B, wo: Vec3, config: &Con
 
 /// [`albedo`] of every channel.
 fn albedo_channels<B: Bxdf + ?Sized>(bxdf: &B, wo: Vec3, config: &Config) -> Vec<Albedo> {
-    let sampled = albedo_sampled_channels(bxdf, wo, config);
-    let cosine = (!bxdf.lobes().is_specular()).then(|| albedo_cosine_channels(bxdf, wo, config));
+    let lobes = bxdf.lobes();
+    let mixed = lobes.is_specular() && lobes.is_non_specular();
+    let (sampled, part) = albedo_sampled_parts(bxdf, wo, config, mixed);
+    let cosine = lobes
+        .is_non_specular()
+        .then(|| albedo_cosine_channels(bxdf, wo, config));
     sampled
         .into_iter()
         .enumerate()
-        .map(|(c, sampled)| Albedo {
-            sampled,
-            cosine: cosine.as_ref().map(|e| e[c]),
+        .map(|(c, sampled)| {
+            let cos = cosine.as_ref().map(|e| e[c]);
+            Albedo {
+                sampled,
+                cosine: cos.filter(|_| !mixed),
+                density_lobes: cos.filter(|_| mixed).map(|cos| (part[c], cos)),
+            }
         })
         .collect()
 }
@@ -686,7 +723,9 @@ struct EnergyTally {
 /// **Energy bound** and **albedo estimators**: at every viewer direction the sampled albedo
 /// is at most `config.albedo_bound` within `k` standard errors, and the two estimators agree
 /// within `k` combined standard errors, per channel (`k` Šidák-corrected over the two tests,
-/// the directions and the channels). Returns the two reports, each of its worst channel.
+/// the directions and the channels): of the whole albedo for a model without delta lobes, of
+/// the lobes with a density for a model with both kinds ([`Albedo::density_lobes`]), none
+/// for a model of delta lobes only. Returns the two reports, each of its worst channel.
 #[must_use]
 pub fn energy_bound<B: Bxdf + ?Sized>(bxdf: &B, config: &Config) -> (LawReport, Option<LawReport>) {
     let directions = config.viewer_directions(bxdf);
@@ -715,7 +754,11 @@ pub fn energy_bound<B: Bxdf + ?Sized>(bxdf: &B, config: &Config) -> (LawReport, 
             {
                 t.largest = Some((s, wo));
             }
-            if let Some(c) = a.cosine {
+            // The two estimators of the whole albedo, or, for a model with delta lobes too,
+            // of the lobes with a density (where a sampler that misses part of them and a
+            // bound that misses `f` where `pdf` is zero would go unseen otherwise).
+            let pair = a.cosine.map(|c| (s, c)).or(a.density_lobes);
+            if let Some((s, c)) = pair {
                 agreement_checked = true;
                 let sigma = (s.std_err.powi(2) + c.std_err.powi(2)).sqrt();
                 let diff = (s.mean - c.mean).abs();
