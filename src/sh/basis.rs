@@ -33,9 +33,9 @@ pub const CLOSED_FORM_BANDS: usize = 4;
 
 /// The flat index of `Y_lm`: `l(l + 1) + m`.
 ///
-/// Precondition: `|m| ≤ l`. Otherwise the index belongs to another band, or, for `l = 0` and
-/// `m < 0`, wraps to a huge index (the function never panics; indexing with that index
-/// does).
+/// Precondition: `|m| ≤ l`. Otherwise the index belongs to another band, or, where
+/// `l(l + 1) + m < 0`, wraps to a huge index (the function never panics; indexing with that
+/// index does).
 ///
 /// ```
 /// use lobe::sh::index;

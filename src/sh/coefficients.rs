@@ -64,10 +64,11 @@ impl<const N: usize, S: Spectrum> Sh<N, S> {
     }
 
     /// The coefficient `f_lm`; zero outside the expansion's bands. Precondition `|m| ≤ l`:
-    /// otherwise the coefficient of another band.
+    /// otherwise the flat index `l(l + 1) + m` ([`index`]) may name another band's
+    /// coefficient.
     ///
     /// # Panics
-    /// For `l = 0` and `m < 0` (an index out of bounds).
+    /// When that index leaves the array: `l(l + 1) + m < 0` (it wraps) or `≥ N`.
     #[inline]
     #[must_use]
     pub fn get(&self, l: usize, m: isize) -> S {

@@ -290,8 +290,9 @@ impl<const N: usize> ShRotation<N> {
     /// The entry `M^l_mn`. Preconditions: `l` below the order, `|m|, |n| ≤ l`.
     ///
     /// # Panics
-    /// If `l` is not below the order or `|m| > l`; an `|n| > l` reads a neighbouring row, or
-    /// panics at the block's ends.
+    /// If `l` is not below the order, or when `m` or `n` outside the band take the flat
+    /// position `(m + l)(2l + 1) + n + l` out of the band's block; inside it they read
+    /// another entry.
     #[must_use]
     pub fn entry(&self, l: usize, m: isize, n: isize) -> f32 {
         let li = l as isize;

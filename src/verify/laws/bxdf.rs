@@ -915,8 +915,9 @@ pub fn consistency<B: Bxdf + ?Sized>(bxdf: &B, config: &Config) -> LawReport {
 }
 
 /// Runs every law that applies to `bxdf`: positivity, the energy bound, and — for a model with
-/// a lobe that has a density — reciprocity, sampling and consistency; the agreement of the two
-/// albedo estimators for a model without delta lobes. For a [`stochastic`](Bxdf::stochastic)
+/// a lobe that has a density — reciprocity, sampling, consistency and the agreement of the
+/// two albedo estimators (of the whole albedo, or of the lobes with a density for a model
+/// with delta lobes too). For a [`stochastic`](Bxdf::stochastic)
 /// model (a layered BSDF, whose `eval` and `pdf` are Monte Carlo estimates) reciprocity,
 /// sampling and consistency are checked in expectation instead
 /// ([`check_bxdf_in_expectation`](super::check_bxdf_in_expectation)). A model of any [`Spectrum`] — `f32`,

@@ -260,7 +260,10 @@ fn bin_area() -> f64 {
 /// unsampled when `m` is not a square).
 fn bin_point(b: usize, j: usize, m: usize, rng: &mut Pcg32) -> Vec3 {
     let m = m.max(1);
-    let rows = (1..=m.isqrt()).rev().find(|&d| m.is_multiple_of(d)).unwrap_or(1);
+    let rows = (1..=m.isqrt())
+        .rev()
+        .find(|&d| m.is_multiple_of(d))
+        .unwrap_or(1);
     let cols = m / rows;
     let (sj, sk) = (j % rows, j / rows);
     let (t, p) = (b / PHI_BINS, b % PHI_BINS);
@@ -613,7 +616,10 @@ mod tests {
             // One jittered point per stratum of a rows × cols grid: the mean fraction along a
             // coordinate is ½ plus the jitters' mean less ½, over the strata across it, whose
             // standard deviation is 1/(√12 · √m · strata across): five of those.
-            let rows = (1..=m.isqrt()).rev().find(|&d| m.is_multiple_of(d)).unwrap();
+            let rows = (1..=m.isqrt())
+                .rev()
+                .find(|&d| m.is_multiple_of(d))
+                .unwrap();
             let sd = |across: usize| 1.0 / (12.0_f64.sqrt() * (m as f64).sqrt() * across as f64);
             let (mc, mp) = (sum_c / m as f64, sum_p / m as f64);
             assert!(
