@@ -303,7 +303,7 @@ fn rough_dielectrics_equal_the_scalar_path() {
         Masking::VCavity,
     ] {
         for mode in [TransportMode::Radiance, TransportMode::Importance] {
-            for eta in [1.5, 1.0 / 1.33, 1.0001] {
+            for eta in [1.5, 1.0 / 1.33, 1.0001, 1.0] {
                 for alpha in [0.3, 1e-4, 2.0] {
                     check(
                         "rough glass",

@@ -125,17 +125,41 @@ fn importance_albedo_is_nearly_one_for_smooth_glass() {
     assert!(glass_lobes_are_reflection_and_transmission());
 }
 
-/// An index-matched interface (`η = 1`, and the `f32` just below it) is a documented
-/// limitation: refraction sends `wi` to `−wo`, where the half vector `wo + η' wi` is rounding
-/// noise, and the model loses light (the figures are printed; the docs quote them). What it
-/// does meet is the energy bound: it never reflects or transmits more than it receives.
+/// An index-matched interface (`η = 1`) is invisible: every sample passes straight through,
+/// to `−wo`, with weight 1 in both transport modes, from either side, and `eval` and `pdf` are
+/// zero (the microfacet formulas lost 37% to 49% of the light there). The `f32` values next
+/// to 1 are left to the formulas, ill-conditioned still: their figures are printed (the docs
+/// quote them) and the energy bound is checked, the law they meet.
 #[test]
-fn index_matched_interface_loses_light_but_never_gains() {
+fn index_matched_interface_passes_light_through() {
+    let mut rng = lobe::verify::Pcg32::new(8, 1);
+    for alpha in [0.01f32, 1.0] {
+        for mode in [TransportMode::Radiance, TransportMode::Importance] {
+            let glass = RoughDielectric::new(Ggx::isotropic(a(alpha)), e(1.0)).with_mode(mode);
+            assert_eq!(glass.lobes(), lobe::bxdf::Lobes::SPECULAR_TRANSMISSION);
+            for theta in [0.0f32, 30.0, 89.0] {
+                for below in [false, true] {
+                    let mut wo = common::dir(theta, 0.4);
+                    if below {
+                        wo.z = -wo.z;
+                    }
+                    let s = glass.sample(wo, rng.next_vec2(), rng.next_f32()).unwrap();
+                    assert_eq!(
+                        (s.wi, s.lobe),
+                        (-wo, lobe::bxdf::Lobes::SPECULAR_TRANSMISSION)
+                    );
+                    assert!((s.weight() - 1.0).abs() < 1e-6, "{s:?}");
+                    let other = common::dir(40.0, 2.0) * if below { 1.0 } else { -1.0 };
+                    assert_eq!((glass.eval(wo, other), glass.pdf(wo, other)), (0.0, 0.0));
+                }
+            }
+        }
+    }
     let check = BxdfCheck::default();
     let wo = common::dir(30.0, 0.0);
-    let k = common::k_sigma(0.01, 4);
-    for eta in [1.0f32, 1.0 - f32::EPSILON / 2.0] {
-        for alpha in [0.01f32, 1.0] {
+    let k = common::k_sigma(0.01, 6);
+    for eta in [1.0 - f32::EPSILON / 2.0, 1.0 + f32::EPSILON] {
+        for alpha in [0.01f32, 0.3, 1.0] {
             let glass = RoughDielectric::new(Ggx::isotropic(a(alpha)), e(eta))
                 .with_mode(TransportMode::Importance);
             let albedo = albedo_sampled(&glass, wo, &check);
