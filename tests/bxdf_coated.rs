@@ -65,7 +65,8 @@ fn glazed_albedo_matches_its_closed_form() {
 /// reflection beyond the critical angle puts a kink in `F` that `F̄`'s quadrature must go
 /// round; integrated straight across it, a white base reflected up to 1.03 at `η = 1/2.4`).
 /// The albedo is integrated in `f64` by the midpoint rule in `μ = cos θi` (the lobe does not
-/// depend on the azimuth; 2¹⁶ nodes, an error below 1e-8 at the kink), `F` is the crate's
+/// depend on the azimuth; 2¹⁶ nodes, an error below 1e-8 at the kink, which the Gauss panels
+/// of `common::quadrature::albedo_quadrature` are not split at), `F` is the crate's
 /// exact Fresnel term (pinned against Mitsuba by `tests/fresnel.rs`; what is tested here is the
 /// normalisation), and the bound 1e-5 covers the `f32` evaluations (1e-6 relative) and `F̄`'s
 /// quadrature (2.5e-7).

@@ -246,19 +246,6 @@ fn an_index_matched_coat_is_its_base() {
     assert!(worst < 1e-5, "{worst}");
 }
 
-/// The exact unpolarised Fresnel reflectance in `f64`, written here: light meeting the
-/// interface at `cos_i` from a medium of index `n_i` toward one of index `n_t`.
-fn fresnel(cos_i: f64, n_i: f64, n_t: f64) -> f64 {
-    let sin_t = n_i / n_t * (1.0 - cos_i * cos_i).max(0.0).sqrt();
-    if sin_t >= 1.0 {
-        return 1.0;
-    }
-    let cos_t = (1.0 - sin_t * sin_t).sqrt();
-    let rs = (n_i * cos_i - n_t * cos_t) / (n_i * cos_i + n_t * cos_t);
-    let rp = (n_t * cos_i - n_i * cos_t) / (n_t * cos_i + n_i * cos_t);
-    0.5 * (rs * rs + rp * rp)
-}
-
 /// `F̄_i = 2 ∫₀¹ F_inside(μ) μ dμ`, the coat's reflectance for diffuse light from inside, by
 /// the midpoint rule on 200 000 panels (the integrand has a kink at the critical angle).
 fn internal_diffuse_reflectance(e: f64) -> f64 {
@@ -266,7 +253,7 @@ fn internal_diffuse_reflectance(e: f64) -> f64 {
     (0..n)
         .map(|i| {
             let mu = (i as f64 + 0.5) / n as f64;
-            2.0 * fresnel(mu, e, 1.0) * mu / n as f64
+            2.0 * common::dielectric_f64(-mu, e).0 * mu / n as f64
         })
         .sum()
 }
@@ -295,7 +282,7 @@ fn a_smooth_coat_over_lambert_matches_the_closed_form() {
             let plastic = Plastic::new(rho, ggx(1e-4), eta(e)).unwrap();
             for theta in [0.0_f32, 40.0, 70.0] {
                 let wo = common::dir(theta, 0.1);
-                let f = fresnel(f64::from(wo.z), 1.0, f64::from(e));
+                let f = common::dielectric_f64(f64::from(wo.z), f64::from(e)).0;
                 let r = f64::from(rho);
                 let closed = f + (1.0 - f) * (1.0 - fi) * r / (1.0 - r * fi);
                 let a = albedo_sampled(&stack, wo, &budget);

@@ -144,15 +144,10 @@ fn thin_dielectric_sums_the_inter_reflections() {
     assert!((glass.reflectance(1.0) - want).abs() < 1e-6);
     // Oblique incidence, from either side (both faces border the outside, so the sheet
     // reflects alike from above and below: a signed cosine would find total internal
-    // reflection from below), against the same sum over Fresnel's equations written here in
-    // f64 (Hecht, Optics, §4.6): R = (r_s² + r_p²)/2 with r_s = (cos θ − η cos θt)/(cos θ + η cos θt),
-    // r_p = (η cos θ − cos θt)/(η cos θ + cos θt), sin θt = sin θ / η.
+    // reflection from below), against the same sum over the textbook Fresnel equations in f64
+    // (`common::dielectric_f64`), entered from outside.
     let sheet = |cos_i: f64| {
-        let eta = 1.5_f64;
-        let cos_t = (1.0 - (1.0 - cos_i * cos_i) / (eta * eta)).sqrt();
-        let rs = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
-        let rp = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
-        let r = 0.5 * (rs * rs + rp * rp);
+        let r = common::dielectric_f64(cos_i, 1.5).0;
         r + (1.0 - r) * (1.0 - r) * r / (1.0 - r * r)
     };
     for theta in [0.0f32, 60.0, 89.0] {

@@ -6,6 +6,7 @@
 
 mod common;
 
+use common::dielectric_f64;
 use common::reference::{field, field32, load};
 
 use lobe::fresnel::{self, DielectricFresnel};
@@ -17,23 +18,6 @@ use serde_json::Value;
 // Independent f64 references: the textbook formulas, written without the rearrangements that
 // the crate uses, and complex arithmetic for the conductor.
 // ---------------------------------------------------------------------------------------------
-
-/// Textbook dielectric Fresnel in f64 (Born & Wolf §1.5.2): `(F, |cos θt|)`, 1 under TIR.
-fn dielectric_f64(cos_i: f64, eta: f64) -> (f64, f64) {
-    let (n, ci) = if cos_i >= 0.0 {
-        (eta, cos_i)
-    } else {
-        (1.0 / eta, -cos_i)
-    };
-    let sin2_t = (1.0 - ci * ci) / (n * n);
-    if sin2_t >= 1.0 {
-        return (1.0, 0.0);
-    }
-    let ct = (1.0 - sin2_t).sqrt();
-    let rs = (ci - n * ct) / (ci + n * ct);
-    let rp = (ct - n * ci) / (ct + n * ci);
-    (0.5 * (rs * rs + rp * rp), ct)
-}
 
 #[derive(Clone, Copy, Debug)]
 struct C64 {

@@ -82,3 +82,23 @@ pub fn angle_f64(a: [f64; 3], b: [f64; 3]) -> f64 {
 pub fn f64s(v: Vec3) -> [f64; 3] {
     [f64::from(v.x), f64::from(v.y), f64::from(v.z)]
 }
+
+/// Textbook dielectric Fresnel in `f64` (Born & Wolf §1.5.2), written without the
+/// rearrangements the crate uses: `(F, |cos θt|)` for light at `cos_i` on an interface of
+/// relative index `eta` (inside over outside; `cos_i < 0` meets it from inside), 1 under
+/// total internal reflection.
+pub fn dielectric_f64(cos_i: f64, eta: f64) -> (f64, f64) {
+    let (n, ci) = if cos_i >= 0.0 {
+        (eta, cos_i)
+    } else {
+        (1.0 / eta, -cos_i)
+    };
+    let sin2_t = (1.0 - ci * ci) / (n * n);
+    if sin2_t >= 1.0 {
+        return (1.0, 0.0);
+    }
+    let ct = (1.0 - sin2_t).sqrt();
+    let rs = (ci - n * ct) / (ci + n * ct);
+    let rp = (ct - n * ci) / (ct + n * ci);
+    (0.5 * (rs * rs + rp * rp), ct)
+}
