@@ -239,41 +239,37 @@ where
 
 /// [`albedo_sampled`] of every channel, on the same samples.
 fn albedo_sampled_channels<B: Bxdf + ?Sized>(bxdf: &B, wo: Vec3, config: &Config) -> Vec<Estimate> {
-    albedo_sampled_parts(bxdf, wo, config, false).0
+    albedo_sampled_parts(bxdf, wo, config).0
 }
 
-/// [`albedo_sampled_channels`], and with `density_part` the albedo of the lobes with a
-/// density on the same samples (a delta sample counting zero); empty otherwise.
+/// [`albedo_sampled_channels`], and on the same samples the albedo of the lobes with a
+/// density (a delta sample counting zero).
 fn albedo_sampled_parts<B: Bxdf + ?Sized>(
     bxdf: &B,
     wo: Vec3,
     config: &Config,
-    density_part: bool,
 ) -> (Vec<Estimate>, Vec<Estimate>) {
     let mut rng = Pcg32::new(config.seed, STREAM);
-    let mut acc = PerChannel::new(bxdf);
-    let mut part = PerChannel::new(bxdf);
+    let (mut all, mut density) = (PerChannel::new(bxdf), PerChannel::new(bxdf));
     for _ in 0..config.albedo_samples {
         let u = rng.next_vec2();
         let uc = rng.next_f32();
-        let sample = bxdf.sample(wo, u, uc);
-        match sample {
-            Some(s) => acc.push(s.weight(), |w| w),
-            None => acc.push_zero(),
-        }
-        if density_part {
-            match sample {
-                Some(s) if !s.is_specular() => part.push(s.weight(), |w| w),
-                _ => part.push_zero(),
+        match bxdf.sample(wo, u, uc) {
+            Some(s) => {
+                all.push(s.weight(), |w| w);
+                if s.is_specular() {
+                    density.push_zero();
+                } else {
+                    density.push(s.weight(), |w| w);
+                }
+            }
+            None => {
+                all.push_zero();
+                density.push_zero();
             }
         }
     }
-    let part = if density_part {
-        part.finish()
-    } else {
-        Vec::new()
-    };
-    (acc.finish(), part)
+    (all.finish(), density.finish())
 }
 
 /// The directional albedo estimated independently of the model's sampler: `wi` cosine-
@@ -343,7 +339,7 @@ pub fn albedo<B: Bxdf<Spectrum = f32> + ?Sized>(bxdf: &B, wo: Vec3, config: &Con
 fn albedo_channels<B: Bxdf + ?Sized>(bxdf: &B, wo: Vec3, config: &Config) -> Vec<Albedo> {
     let lobes = bxdf.lobes();
     let mixed = lobes.is_specular() && lobes.is_non_specular();
-    let (sampled, part) = albedo_sampled_parts(bxdf, wo, config, mixed);
+    let (sampled, part) = albedo_sampled_parts(bxdf, wo, config);
     let cosine = lobes
         .is_non_specular()
         .then(|| albedo_cosine_channels(bxdf, wo, config));

@@ -43,9 +43,7 @@ use super::report::{Law, LawReport, Report};
 use crate::Spectrum;
 use crate::bxdf::Bxdf;
 use crate::sampling::uniform_sphere;
-use crate::verify::stats::{
-    Accumulator, Estimate, Pcg32, chi2_survival, sidak, two_sided_quantile,
-};
+use crate::verify::stats::{Accumulator, Pcg32, chi2_survival, sidak, two_sided_quantile};
 use glam::Vec3;
 use std::f64::consts::TAU;
 use std::format;
@@ -96,8 +94,7 @@ impl ExpectedPair {
     /// not finite (an infinite estimate: no claim, and a failed check).
     #[must_use]
     pub fn z_score(&self) -> f64 {
-        let finite = |e: &Estimate| e.mean.is_finite() && e.std_err.is_finite();
-        if !(finite(&self.forward) && finite(&self.backward)) {
+        if !(self.forward.is_finite() && self.backward.is_finite()) {
             return f64::NAN;
         }
         let d = (self.forward.mean - self.backward.mean).abs();
@@ -253,18 +250,22 @@ fn bin_area() -> f64 {
     (2.0 / THETA_BINS as f64) * (TAU / PHI_BINS as f64)
 }
 
-/// A point of bin `b`, stratum `j` of `m`: a grid of `rows × m/rows` strata in `(cos θ, φ)`,
-/// `rows` the largest divisor of `m` not above `√m` (`√m × √m` for a square `m`), jittered.
-/// Every stratum is used once, so the `m` points are a stratified uniform sample of the bin
-/// (a `⌈√m⌉ × ⌈√m⌉` grid of which only the first `m` strata were used left a band of the bin
-/// unsampled when `m` is not a square).
-fn bin_point(b: usize, j: usize, m: usize, rng: &mut Pcg32) -> Vec3 {
+/// The grid of `m` strata of a bin, `(rows, cols)` in `(cos θ, φ)`: `rows` the largest
+/// divisor of `m` not above `√m`, so that `rows · cols = m` (`√m × √m` for a square `m`).
+fn strata(m: usize) -> (usize, usize) {
     let m = m.max(1);
     let rows = (1..=m.isqrt())
         .rev()
         .find(|&d| m.is_multiple_of(d))
         .unwrap_or(1);
-    let cols = m / rows;
+    (rows, m / rows)
+}
+
+/// A point of bin `b`, stratum `j` of `m`: a grid of [`strata`], jittered. Every stratum is used once, so the `m` points are a stratified uniform sample of the bin
+/// (a `⌈√m⌉ × ⌈√m⌉` grid of which only the first `m` strata were used left a band of the bin
+/// unsampled when `m` is not a square).
+fn bin_point(b: usize, j: usize, m: usize, rng: &mut Pcg32) -> Vec3 {
+    let (rows, cols) = strata(m);
     let (sj, sk) = (j % rows, j / rows);
     let (t, p) = (b / PHI_BINS, b % PHI_BINS);
     let u = rng.next_vec2();
@@ -616,10 +617,8 @@ mod tests {
             // One jittered point per stratum of a rows × cols grid: the mean fraction along a
             // coordinate is ½ plus the jitters' mean less ½, over the strata across it, whose
             // standard deviation is 1/(√12 · √m · strata across): five of those.
-            let rows = (1..=m.isqrt())
-                .rev()
-                .find(|&d| m.is_multiple_of(d))
-                .unwrap();
+            let (rows, cols) = strata(m);
+            assert_eq!(rows * cols, m);
             let sd = |across: usize| 1.0 / (12.0_f64.sqrt() * (m as f64).sqrt() * across as f64);
             let (mc, mp) = (sum_c / m as f64, sum_p / m as f64);
             assert!(
@@ -627,7 +626,7 @@ mod tests {
                 "m {m}: mean cos fraction {mc}"
             );
             assert!(
-                (mp - 0.5).abs() < 5.0 * sd(m / rows),
+                (mp - 0.5).abs() < 5.0 * sd(cols),
                 "m {m}: mean φ fraction {mp}"
             );
         }

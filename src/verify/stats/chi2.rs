@@ -414,9 +414,9 @@ pub fn chi2_sphere_rng(
     // The no-sample bin. With an expectation the chi-square can weigh it is one of its bins;
     // below that it is never pooled (among direction bins, a hundred failures against an
     // expectation of 0.04 drowned: p = 0.27), but tested alone: the chance of as many
-    // failures or more for a Poisson count whose mean is the expectation raised by the
-    // quadrature's estimated error, held with the chi-square to the run's significance
-    // (Šidák over the two). Too many, and they count as hits where nothing is expected.
+    // failures or more for a Poisson count whose mean is the expectation raised by what the
+    // quadrature may have missed, held with the chi-square to the run's significance (Šidák
+    // over the two). Too many, and they count as hits where nothing is expected.
     let mut significance = config.significance;
     let no_sample = Chi2Residual {
         bin: Chi2Bin::NoSample,

@@ -93,7 +93,14 @@ impl Estimate {
     /// something.
     #[inline]
     fn is_finite_against(&self, target: f64) -> bool {
-        self.mean.is_finite() && self.std_err.is_finite() && target.is_finite()
+        self.is_finite() && target.is_finite()
+    }
+
+    /// The mean and the standard error are both finite (an estimate of at least two finite
+    /// samples whose spread did not overflow).
+    #[inline]
+    pub(crate) fn is_finite(&self) -> bool {
+        self.mean.is_finite() && self.std_err.is_finite()
     }
 
     /// The relative standard error `std_err / |mean|` (infinite for a zero mean with a
