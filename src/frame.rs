@@ -176,31 +176,40 @@ pub fn reflect_away(w: Vec3, n: Vec3) -> Vec3 {
 /// takes a direction pointing away, the crate's *relative* index [`Eta`] (inside over
 /// outside, whichever side `w` is on), and returns `None` on total internal reflection.
 ///
-/// Precision: `cos θ_t = √(1 − sin² θ_t)` cancels where `sin² θ_t` is near 1, which for an
-/// index near 1 is grazing incidence: the rounding of a unit `w` (about 1e-7 in `|w × n|²`)
-/// then dominates `cos² θ_t`. At `η = 1`, where the answer is `−w`, `cos θ_t` is 3.6% off at
-/// `cos θ_i = 1e-3`, 15% at 3e-4, and 0 at 1e-4 (a direction in the tangent plane, for which
-/// `SmoothDielectric` samples nothing). A physically small band; computing `cos² θ_t` as
-/// `(1 − η'²) + η'² cos² θ_i` there would avoid it, and is not done yet.
+/// Precision: `cos² θ_t = 1 − η'² sin² θ_i` (with `η' = η_i/η_t`) is computed as
+/// `cos² θ_i + (1 − η'²) sin² θ_i`, with `sin² θ_i = |w × n|²`, `cos θ_i = w·n` and
+/// `1 − η'²` formed from `(η − 1)(η + 1)`, all of which keep their relative precision: the
+/// first form cancels at grazing incidence for an index near 1 (3.6% off in `cos θ_t` at
+/// `cos θ_i = 1e-3` and `η = 1`), and `1 − cos² θ_i` would cancel near the normal, where a
+/// large `η'` magnifies it. At `η = 1` the result is `−w` to rounding. The result is
+/// assembled as `−η' (w − cos θ_i n) − cos θ_t n`, so in the local frame (`n = z`) its
+/// tangential components are `−η'` times `w`'s and its `z` is `∓cos θ_t` itself: both hold to
+/// a few ulps at every angle (`cos θ_t` relative to `cos θ_i² + |1 − η'²| sin² θ_i`, which is
+/// `cos² θ_t` itself except near the critical angle, where the problem is ill-conditioned).
 #[inline(always)]
 #[must_use]
 pub fn refract_away(w: Vec3, n: Vec3, eta: Eta) -> Option<Vec3> {
     let mut cos_i = w.dot(n);
-    // η_t / η_i, and the normal turned toward w's side.
-    let (eta_ti_inv, n) = if cos_i >= 0.0 {
-        (1.0 / eta.get(), n)
+    let e = eta.get();
+    // η' = η_i / η_t and 1 − η'², for the side w is on, and the normal turned toward w.
+    // (η − 1) and (1 − η) are exact for η near 1, where 1 − η'² is small.
+    let (eta_it, one_minus_eta2, n) = if cos_i >= 0.0 {
+        let eta_it = 1.0 / e;
+        (eta_it, (e - 1.0) * (e + 1.0) * (eta_it * eta_it), n)
     } else {
         cos_i = -cos_i;
-        (eta.get(), -n)
+        (e, (1.0 - e) * (1.0 + e), -n)
     };
-    // sin² θ_t = (η_i/η_t)² sin² θ_i. sin² θ_i is |w × n|² rather than 1 − cos² θ_i, which
-    // cancels near normal incidence, where a large η magnifies the error.
-    let sin2_t = eta_ti_inv * eta_ti_inv * w.cross(n).length_squared();
-    if sin2_t > 1.0 {
+    let sin2_i = w.cross(n).length_squared();
+    let cos2_t = cos_i * cos_i + one_minus_eta2 * sin2_i;
+    if cos2_t < 0.0 {
         return None;
     }
-    let cos_t = safe_sqrt(1.0 - sin2_t);
-    Some(-w * eta_ti_inv + n * (eta_ti_inv * cos_i - cos_t))
+    let cos_t = sqrt(cos2_t);
+    // −η' times w's tangential part, then −cos θ_t along the normal: the same vector as
+    // pbrt's `−η' w + (η' cos θ_i − cos θ_t) n`, without its cancellation in the normal
+    // component near the critical angle (exact in z for n = z).
+    Some(-(w - n * cos_i) * eta_it - n * cos_t)
 }
 
 #[cfg(test)]

@@ -124,3 +124,71 @@ fn total_internal_reflection_exactly_past_the_critical_angle() {
     let t = refract_away(Vec3::Z, Vec3::Z, eta).unwrap();
     assert!((t + Vec3::Z).length() < 1e-6);
 }
+
+/// `refract_away` against an f64 refraction of the same (normalised) `f32` direction, at
+/// incidence from normal to 1e-7 of grazing, from both sides, for indices near 1 and far from
+/// it. The bound is the forward error of `cos θ_t = √(cos² θ_i + (1 − η'²) sin² θ_i)`: a few
+/// ulps of each term, divided by `2 cos θ_t` (its conditioning near the critical angle).
+#[test]
+fn refraction_keeps_its_digits_at_grazing_incidence() {
+    let eps = f64::from(f32::EPSILON);
+    let mut worst = 0.0f64;
+    for eta in [1.0f32, 1.0001, 0.9999, 1.5, 1.0 / 1.5, 2.4, 1e-3, 1e3] {
+        let eta_p = Eta::new(eta).unwrap();
+        for k in 0..=140 {
+            let c = 10f64.powf(-7.0 * f64::from(k) / 140.0);
+            for (phi, side) in [(0.3f64, 1.0f64), (2.0, -1.0), (4.4, 1.0), (5.9, -1.0)] {
+                let s = (1.0 - c * c).sqrt();
+                let w = Vec3::new(
+                    (s * phi.cos()) as f32,
+                    (s * phi.sin()) as f32,
+                    (side * c) as f32,
+                )
+                .normalize();
+                // The reference: the same f32 direction, normalised in f64.
+                let w64 = [f64::from(w.x), f64::from(w.y), f64::from(w.z)];
+                let len = (w64[0] * w64[0] + w64[1] * w64[1] + w64[2] * w64[2]).sqrt();
+                let (wx, wy, wz) = (w64[0] / len, w64[1] / len, w64[2] / len);
+                let eta_it = if wz >= 0.0 {
+                    1.0 / f64::from(eta)
+                } else {
+                    f64::from(eta)
+                };
+                let cos2_t = 1.0 - eta_it * eta_it * (1.0 - wz * wz);
+                let t = refract_away(w, Vec3::Z, eta_p);
+                // Total internal reflection is decided within the rounding of cos² θ_t.
+                let decided = cos2_t.abs() > 8.0 * eps * (1.0 + eta_it * eta_it);
+                if !decided {
+                    continue;
+                }
+                assert_eq!(
+                    t.is_none(),
+                    cos2_t < 0.0,
+                    "η {eta} cos θ {wz:e}: cos² θt = {cos2_t:e}"
+                );
+                let Some(t) = t else { continue };
+                let cos_t = cos2_t.sqrt();
+                let tz = -wz.signum() * cos_t;
+                let bound_z = 8.0
+                    * eps
+                    * ((1.0 - eta_it * eta_it).abs() * (1.0 - wz * wz) + wz * wz + cos2_t)
+                    / cos_t;
+                let err_z = (f64::from(t.z) - tz).abs();
+                assert!(
+                    err_z <= bound_z,
+                    "η {eta} cos θ {wz:e}: t.z {} vs {tz:e} (bound {bound_z:e})",
+                    t.z
+                );
+                worst = worst.max(err_z / bound_z);
+                for (got, want) in [(t.x, -eta_it * wx), (t.y, -eta_it * wy)] {
+                    let err = (f64::from(got) - want).abs();
+                    assert!(
+                        err <= 4.0 * eps * want.abs() + 1e-300,
+                        "η {eta} cos θ {wz:e}: {got} vs {want:e}"
+                    );
+                }
+            }
+        }
+    }
+    println!("worst error / bound of cos θt: {worst:.3}");
+}
