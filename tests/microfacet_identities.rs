@@ -244,3 +244,58 @@ fn rational_g1_stays_near_the_exact_one() {
     assert!(worst < 3.2e-3, "{worst} at a = {at}");
     assert!(worst > 1e-4, "the approximation is not exact: {worst}");
 }
+
+/// Walter's rational `G1` masks, but the sampler draws the exact visible normals, so the
+/// visible-normal density (the sampler's pdf) keeps the exact `G1`: with the rational one it
+/// would integrate to `G1_rational / G1_exact` (up to 1.0031, at `a ≈ 1.34`), not 1.
+#[test]
+fn rational_masking_keeps_the_exact_visible_density() {
+    let alpha = Alpha::new(0.5).unwrap();
+    let exact = Beckmann::isotropic(alpha);
+    let rational = exact.with_masking(BeckmannMasking::WalterRational);
+    let m = Vec3::new(0.3, -0.2, 0.9).normalize();
+    let mut masking_differs = 0;
+    for i in 1..=400 {
+        let a = i as f32 * 0.01;
+        let w = Vec3::new(1.0, 0.0, a * 0.5).normalize();
+        let (ve, vr) = (exact.view(w), rational.view(w));
+        assert_eq!(vr.visible.to_bits(), ve.visible.to_bits(), "a = {a}");
+        assert_eq!(
+            rational.d_visible(w, m).to_bits(),
+            exact.d_visible(w, m).to_bits(),
+            "a = {a}"
+        );
+        // The masking is still the rational one.
+        let g1 = 1.0 / (1.0 + vr.lambda);
+        assert!(
+            (g1 - rational.g1(w)).abs() <= 1e-6,
+            "a = {a}: {g1} vs {}",
+            rational.g1(w)
+        );
+        masking_differs += usize::from((rational.g1(w) - exact.g1(w)).abs() > 1e-4);
+    }
+    assert!(masking_differs > 100, "{masking_differs}");
+}
+
+/// A tangent direction whose `z` is `−0` (which [`upper`](lobe::microfacet::upper) keeps) has
+/// the same view as `+0`'s: `Λ = +∞`, so that `1 + Λo + Λi` is never `−∞ + ∞`.
+#[test]
+fn a_tangent_view_with_negative_zero_is_the_positive_zeros() {
+    let a = Alpha::new(0.3).unwrap();
+    let dists: [(&str, Box<dyn NormalDistribution>); 3] = [
+        ("GGX", Box::new(Ggx::isotropic(a))),
+        ("Beckmann", Box::new(Beckmann::isotropic(a))),
+        (
+            "GGX anisotropic",
+            Box::new(Ggx::new(a, Alpha::new(0.7).unwrap())),
+        ),
+    ];
+    for (name, dist) in &dists {
+        for w in [Vec3::new(1.0, 0.0, -0.0), Vec3::new(0.6, -0.8, -0.0)] {
+            let (neg, pos) = (dist.view(w), dist.view(Vec3::new(w.x, w.y, 0.0)));
+            assert_eq!(neg.lambda, f32::INFINITY, "{name} {w:?}");
+            assert_eq!(pos.lambda, f32::INFINITY, "{name} {w:?}");
+            assert_eq!(neg.visible, 0.0, "{name} {w:?}");
+        }
+    }
+}

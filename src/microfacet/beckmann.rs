@@ -26,6 +26,9 @@ pub enum BeckmannMasking {
     /// Mitsuba 3 uses it. It is within 3.2e-3 of the exact `G1` (measured 3.11e-3, at `a ≈ 1.34`),
     /// so it conserves the projected area only to that order (measured: at most 0.44% ± 0.18% off over
     /// `α ∈ [0.01, 2]`, `θ ≤ 89°`), and it exceeds 1 by up to 6.1e-5 just below `a = 1.6`.
+    /// It masks (`G1`, `G2`) only: the visible normals are still sampled exactly, so their
+    /// density (the sampling pdf) keeps the exact `G1`, which normalises it. (Mitsuba 3 reports
+    /// the rational `G1` there too, a pdf up to 0.31% off the sampler's density.)
     WalterRational,
 }
 
@@ -193,8 +196,17 @@ impl NormalDistribution for Beckmann {
         let w = upper(w);
         let (x, y) = (self.width.ax * w.x, self.width.ay * w.y);
         let r = sqrt(x * x + y * y);
-        let lambda = self.lambda_at(w.z.abs() / r);
-        View::with_lambda(w, lambda, [x, y, r, 0.0, 0.0, 0.0])
+        let a = w.z.abs() / r;
+        let extra = [x, y, r, 0.0, 0.0, 0.0];
+        match self.masking {
+            BeckmannMasking::Exact => View::with_lambda(w, lambda_exact(a), extra),
+            // The sampler draws the exact visible normals, so the density's factor takes the
+            // exact Λ; masking (G1, G2) takes the rational one.
+            BeckmannMasking::WalterRational => View {
+                visible: View::visible_factor(w, lambda_exact(a)),
+                ..View::with_lambda(w, self.lambda_at(a), extra)
+            },
+        }
     }
 
     /// In the configuration stretched to `α = 1`, with the view at polar angle `θ`, the
@@ -208,10 +220,10 @@ impl NormalDistribution for Beckmann {
     fn sample(&self, view: &View, u: Vec2) -> Vec3 {
         let [x, y, r, ..] = view.extra;
         let cos_t = view.w.z;
-        // With exact masking the view's Λ gives the CDF's end: C(cot θ) = cos θ (1 + Λ).
+        // The exact Λ gives the CDF's end: C(cot θ) = cos θ (1 + Λ), which is 1/visible.
         let total = match self.masking {
             BeckmannMasking::Exact => cos_t * (1.0 + view.lambda),
-            BeckmannMasking::WalterRational => f32::NAN,
+            BeckmannMasking::WalterRational => 1.0 / view.visible,
         };
         let sx = sample_visible_slope(cos_t, r, u.x, total);
         let sy = erf_inv_approx((2.0 * u.y - 1.0).clamp(-1.0 + f32::EPSILON, 1.0 - f32::EPSILON));

@@ -249,8 +249,9 @@ impl NormalDistribution for Ggx {
         View {
             w,
             // 1 + Λ = (L/wz + 1)/2 (Heitz 2014, eq. 86): as precise as 1 + Λ needs, for one
-            // division ([`lambda`](NormalDistribution::lambda) keeps Λ's own digits).
-            lambda: 0.5 * (len / w.z - 1.0),
+            // division ([`lambda`](NormalDistribution::lambda) keeps Λ's own digits). |wz|:
+            // `upper` keeps a −0, for which Λ is +∞ like +0's.
+            lambda: 0.5 * (len / w.z.abs() - 1.0),
             visible,
             extra: [wh.x, wh.y, wh.z, cap, reflection, len],
         }

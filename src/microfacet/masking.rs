@@ -60,8 +60,8 @@ impl Masking {
         // through |wo.z|, |wo·m| and Λ, which are even, so view.w = ±wo gives the same value.
         let g2 = match self {
             Self::HeightCorrelated => return dist.visibility(view, wi),
-            // G1(wo) = (G1/cos θ) cos θ, the view's visible-normal factor.
-            Self::Separable => view.visible * view.w.z * dist.g1(wi),
+            // G1(wo) = 1/(1 + Λ(wo)), from the view's Λ (its visible factor may use another).
+            Self::Separable => dist.g1(wi) / (1.0 + view.lambda),
             Self::VCavity => v_cavity(view.w, wi, m),
         };
         g2 / (4.0 * view.w.z * wi.z.abs())

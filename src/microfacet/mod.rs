@@ -60,8 +60,11 @@ pub struct View {
     pub w: Vec3,
     /// Smith's `Λ(w)` (and `G1(w) = 1 / (1 + Λ(w))`).
     pub lambda: f32,
-    /// `G1(w) / cos θw`, the view's factor in the visible-normal density; `0` for a tangent
-    /// `w`. It has a finite limit at grazing, so it is kept rather than the two factors.
+    /// `G1(w) / cos θw` with the distribution's exact Smith `G1`, the view's factor in the
+    /// visible-normal density; `0` for a tangent `w`. It has a finite limit at grazing, so it
+    /// is kept rather than the two factors. For a masking that approximates `G1`
+    /// ([`BeckmannMasking::WalterRational`]) it is the exact one's, which normalises the
+    /// density the sampler draws, while `lambda` is the approximation's.
     pub visible: f32,
     /// Room for what the distribution's own sampler keeps about `w` ([`Ggx`]: its stretched
     /// view and bounded cap), written and read by the distribution alone; zero otherwise.
@@ -78,12 +81,20 @@ impl View {
         Self {
             w,
             lambda,
-            visible: if w.z > 0.0 {
-                1.0 / ((1.0 + lambda) * w.z)
-            } else {
-                0.0
-            },
+            visible: Self::visible_factor(w, lambda),
             extra,
+        }
+    }
+
+    /// The visible-normal factor `1/((1 + Λ) cos θ)` of `w` (in the upper hemisphere) with
+    /// Smith's `Λ(w)`; `0` for a tangent `w`.
+    #[inline(always)]
+    #[must_use]
+    pub(crate) fn visible_factor(w: Vec3, lambda: f32) -> f32 {
+        if w.z > 0.0 {
+            1.0 / ((1.0 + lambda) * w.z)
+        } else {
+            0.0
         }
     }
 
