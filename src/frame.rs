@@ -49,7 +49,8 @@ impl Frame {
     }
 
     /// A frame around the unit normal `n` whose `x` follows the tangent `t` (for example
-    /// `∂p/∂u`, which orients an anisotropic lobe), made orthogonal to `n` by Gram-Schmidt.
+    /// `∂p/∂u`, which orients an anisotropic lobe), made orthogonal to `n` by Gram-Schmidt
+    /// (twice, so the frame is orthonormal to a few ε even for `t` within 1e-6 rad of `n`).
     ///
     /// When `t` is (nearly) parallel to `n`, or not finite, falls back to
     /// [`Frame::from_normal`]. Precondition: `n` has unit length; `t` need not.
@@ -61,7 +62,12 @@ impl Frame {
         if !(len2 > 1e-12 * t.length_squared()) || !len2.is_finite() {
             return Self::from_normal(n);
         }
+        // A second Gram-Schmidt pass: the first cancels when t is nearly parallel to n (its
+        // error is about ε / sin∠(n, t), 0.13 in x·n at 1e-6 rad); the second starts from a
+        // unit x almost orthogonal to n and leaves it orthogonal to a few ε.
         let x = x / sqrt(len2);
+        let x = x - n * n.dot(x);
+        let x = x / sqrt(x.length_squared());
         Self {
             x,
             y: n.cross(x),

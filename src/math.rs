@@ -550,7 +550,11 @@ mod tests {
             for s in [1.0f32, -1.0] {
                 let got = f64::from(erf_inv(s * x));
                 let err = (got - f64::from(s) * want).abs() / want;
-                assert!(err <= 4e-7, "erf_inv({}) = {got}, SciPy {want}: {err:.2e}", s * x);
+                assert!(
+                    err <= 4e-7,
+                    "erf_inv({}) = {got}, SciPy {want}: {err:.2e}",
+                    s * x
+                );
             }
         }
         assert!(erf_inv(1.5).is_nan());

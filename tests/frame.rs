@@ -192,3 +192,42 @@ fn refraction_keeps_its_digits_at_grazing_incidence() {
     }
     println!("worst error / bound of cos θt: {worst:.3}");
 }
+
+/// A tangent within 1e-2 to 1.1e-6 rad of the normal still gives an orthonormal frame: one
+/// Gram-Schmidt pass cancels there (its error grows as ε / angle, 0.13 at 1e-6 rad).
+#[test]
+fn a_nearly_parallel_tangent_gives_an_orthonormal_frame() {
+    let n = Vec3::new(0.36, 0.48, 0.8);
+    let (u, v) = {
+        let f = Frame::from_normal(n);
+        (f.x, f.y)
+    };
+    let mut worst = 0.0f32;
+    for angle in [1e-2f32, 1e-3, 1e-4, 1e-5, 3e-6, 1.1e-6] {
+        for k in 0..64 {
+            let phi = k as f32 * 0.098;
+            let t = n + angle * (phi.cos() * u + phi.sin() * v);
+            let f = Frame::from_normal_tangent(n, t * 3.0);
+            let err = [
+                f.x.dot(n).abs(),
+                f.y.dot(n).abs(),
+                f.x.dot(f.y).abs(),
+                (f.x.length() - 1.0).abs(),
+                (f.y.length() - 1.0).abs(),
+            ]
+            .into_iter()
+            .fold(0.0f32, f32::max);
+            worst = worst.max(err);
+            assert!(
+                err <= 4.0 * f32::EPSILON,
+                "angle {angle} φ {phi}: error {err:e}"
+            );
+            // x still follows the tangent's direction away from n.
+            assert!(
+                f.x.dot(phi.cos() * u + phi.sin() * v) > 0.99,
+                "angle {angle} φ {phi}"
+            );
+        }
+    }
+    println!("worst orthonormality error: {worst:e}");
+}
