@@ -81,3 +81,25 @@ fn diffuse_transmission_obeys_every_law() {
     assert_eq!(leaf.eval(down, down), 0.25 / pi);
     assert_eq!(rgb.albedo().max_channel(), 0.9);
 }
+
+/// `lobes` names the sides the sampler can draw: a side of zero weight is left out (so a
+/// black transmittance makes a one-sided reflector, which `verify` checks as one).
+#[test]
+fn lobes_name_only_the_sides_of_non_zero_weight() {
+    use lobe::bxdf::Lobes;
+    let both = DiffuseTransmission::new(0.3f32, 0.5).unwrap();
+    let reflect = DiffuseTransmission::new(0.3f32, 0.0).unwrap();
+    let transmit = DiffuseTransmission::new(0.0f32, 0.5).unwrap();
+    assert_eq!(
+        both.lobes(),
+        Lobes::DIFFUSE_REFLECTION | Lobes::DIFFUSE | Lobes::TRANSMISSION
+    );
+    assert_eq!(reflect.lobes(), Lobes::DIFFUSE_REFLECTION);
+    assert_eq!(transmit.lobes(), Lobes::DIFFUSE | Lobes::TRANSMISSION);
+    // Even at a lobe choice of 1, the reflector only reflects.
+    let wo = Vec3::new(0.48, 0.36, 0.8);
+    let s = reflect
+        .sample(wo, lobe::Vec2::new(0.3, 0.6), 1.0)
+        .expect("a reflection");
+    assert!(s.wi.z > 0.0 && s.lobe == Lobes::DIFFUSE_REFLECTION, "{s:?}");
+}

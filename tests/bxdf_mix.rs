@@ -139,3 +139,49 @@ fn two_sided_is_the_model_above_and_its_mirror_below() {
     eprintln!("{report}");
     assert!(report.passed(), "{report}");
 }
+
+/// A lobe choice of exactly 1 (inside the range `debug_check` accepts) picks no part of zero
+/// weight: the sample's density is the model's `pdf` at its direction, and the lobe the
+/// chosen part's.
+#[test]
+fn a_lobe_choice_of_one_picks_no_part_of_zero_weight() {
+    let glossy = Phong::new(0.0f32, 0.9, 1000.0).unwrap();
+    let mix = Mix::new(Lambert::new(0.8f32).unwrap(), glossy, 0.0).unwrap();
+    let wo = Vec3::new(0.48, 0.36, 0.8);
+    for u in [[0.2f32, 0.7], [0.9, 0.1], [0.5, 0.5]] {
+        let s = mix
+            .sample(wo, lobe::Vec2::from(u), 1.0)
+            .expect("a diffuse sample");
+        assert!(
+            !s.lobe.intersects(lobe::bxdf::Lobes::GLOSSY),
+            "{:?}",
+            s.lobe
+        );
+        let p = mix.pdf(wo, s.wi);
+        assert!(
+            (s.pdf - p).abs() <= 1e-6 * p,
+            "sample pdf {} vs pdf {p}",
+            s.pdf
+        );
+    }
+}
+
+/// `lobes` names the lobes of the parts that can be drawn: a part of weight 0 adds none.
+#[test]
+fn lobes_leave_out_a_part_of_zero_weight() {
+    use lobe::bxdf::Lobes;
+    let glossy = Phong::new(0.0f32, 0.9, 100.0).unwrap();
+    let matte = Lambert::new(0.8f32).unwrap();
+    assert_eq!(
+        Mix::new(matte, glossy, 0.0).unwrap().lobes(),
+        Lobes::DIFFUSE_REFLECTION
+    );
+    assert_eq!(
+        Mix::new(matte, glossy, 1.0).unwrap().lobes(),
+        Lobes::GLOSSY_REFLECTION
+    );
+    assert_eq!(
+        Mix::new(matte, glossy, 0.5).unwrap().lobes(),
+        Lobes::DIFFUSE_REFLECTION | Lobes::GLOSSY_REFLECTION
+    );
+}

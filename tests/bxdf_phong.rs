@@ -251,3 +251,25 @@ fn refuses_bad_parameters() {
     let m = Phong::new(0.25_f32, 0.5, 7.0).unwrap();
     assert_eq!((m.kd(), m.ks(), m.exponent()), (0.25, 0.5, 7.0));
 }
+
+/// With a black specular coefficient the glossy lobe has weight 0: a lobe choice of exactly 1
+/// (inside the range `debug_check` accepts) still draws the diffuse lobe, whose density the
+/// sample reports.
+#[test]
+fn a_lobe_choice_of_one_draws_no_lobe_of_zero_weight() {
+    let phong = Phong::new(0.5f32, 0.0, 50.0).unwrap();
+    assert!(!phong.lobes().intersects(Lobes::GLOSSY));
+    let wo = Vec3::new(0.48, 0.36, 0.8);
+    for u in [[0.2f32, 0.7], [0.9, 0.1], [0.5, 0.5]] {
+        let s = phong
+            .sample(wo, Vec2::from(u), 1.0)
+            .expect("a diffuse sample");
+        assert_eq!(s.lobe, Lobes::DIFFUSE_REFLECTION);
+        let p = phong.pdf(wo, s.wi);
+        assert!(
+            (s.pdf - p).abs() <= 1e-6 * p,
+            "sample pdf {} vs pdf {p}",
+            s.pdf
+        );
+    }
+}

@@ -158,6 +158,8 @@ macro_rules! diffuse_glossy_model {
                 if !(wo.z > 0.0) {
                     return None;
                 }
+                // uc = 1 (accepted) must not pick the glossy lobe when its weight is 0.
+                let uc = uc.min($crate::sampling::ONE_MINUS_EPSILON);
                 let (wi, kind) = if uc < self.p_diffuse {
                     (
                         $crate::sampling::cosine_hemisphere(u),
