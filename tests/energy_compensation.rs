@@ -1066,3 +1066,37 @@ fn constructors_refuse_what_the_tables_do_not_hold() {
     assert!(GGX_E[0].iter().all(|&e| e == 1.0));
     assert!((alpha_node(ALPHA_NODES - 1, ALPHA_NODES) - 1.0).abs() < 1e-7);
 }
+
+/// Turquin's factor (at least 1) on a value `Microfacet` already holds at `f32::MAX` — a
+/// grazing mirror pair of a narrow lobe under V-cavity masking, which only a table of your own
+/// (`with_albedo`) can pair with — stays finite in `eval`, `eval_pdf` and `sample`.
+#[test]
+fn turquin_scaling_stays_finite_at_the_clamped_value() {
+    let gold = ComplexIor::new(
+        Vec3::new(0.143, 0.375, 1.442),
+        Vec3::new(3.983, 2.386, 1.603),
+    )
+    .unwrap();
+    let inner = Microfacet::new(
+        Ggx::new(a(0.2), a(0.7)),
+        Masking::VCavity,
+        Conductor { ior: gold },
+    );
+    let row = Ggx::isotropic(a(0.6)).conductor_albedo().unwrap();
+    let m = CompensatedMicrofacet::with_albedo(inner, row, Compensation::Turquin);
+    let (wo, wi) = (Vec3::new(1.0, 0.0, 1e-20), Vec3::new(-1.0, -0.0, 1e-20));
+    assert_eq!(
+        inner.eval(wo, wi).max_element(),
+        f32::MAX,
+        "the case is the clamped one"
+    );
+    let f = m.eval(wo, wi);
+    assert!(f.is_finite() && f.min_element() >= 0.0, "{f:?}");
+    let mut rng = Pcg32::new(7, 0);
+    let wo = Vec3::new(1.0, 0.0, 1e-7).normalize();
+    for _ in 0..10_000 {
+        if let Some(s) = m.sample(wo, rng.next_vec2(), rng.next_f32()) {
+            assert!(s.f.is_finite() && s.pdf.is_finite(), "{s:?}");
+        }
+    }
+}

@@ -216,6 +216,14 @@ impl<D: NormalDistribution, F: FresnelAverage> CompensatedMicrofacet<D, F> {
         if total > 0.0 { ms / total } else { 0.0 }
     }
 
+    /// Turquin's scaling of a single-scattering value `f` by the factor at `wo`, held finite:
+    /// `f` may be `f32::MAX` already (a grazing mirror pair of a narrow lobe under V-cavity
+    /// masking, where `Microfacet` clamps), and the factor is at least 1.
+    #[inline(always)]
+    fn turquin(f: F::Spectrum, outgoing: F::Spectrum) -> F::Spectrum {
+        (f * outgoing).map(|v| v.min(f32::MAX))
+    }
+
     /// The compensation lobe's value for `wo`, `wi` above the surface, given the factor at
     /// `wo`.
     #[inline(always)]
@@ -245,7 +253,7 @@ impl<D: NormalDistribution, F: FresnelAverage> CompensatedMicrofacet<D, F> {
                 f + self.lobe(at.outgoing, wi)
             }
             Compensation::KullaConty => f,
-            Compensation::Turquin => f * at.outgoing,
+            Compensation::Turquin => Self::turquin(f, at.outgoing),
         }
     }
 
@@ -268,7 +276,7 @@ impl<D: NormalDistribution, F: FresnelAverage> CompensatedMicrofacet<D, F> {
                 (1.0 - p) * pdf + p * cosine_hemisphere_pdf(wi.z),
             ),
             Compensation::KullaConty => (f, (1.0 - p) * pdf),
-            Compensation::Turquin => (f * at.outgoing, pdf),
+            Compensation::Turquin => (Self::turquin(f, at.outgoing), pdf),
         }
     }
 
@@ -288,7 +296,7 @@ impl<D: NormalDistribution, F: FresnelAverage> CompensatedMicrofacet<D, F> {
         let inner = &self.inner;
         if self.compensation == Compensation::Turquin {
             let mut s = inner.sample_with::<LANES>(&at.inner, u, uc, masking)?;
-            s.f = s.f * at.outgoing;
+            s.f = Self::turquin(s.f, at.outgoing);
             return Some(s);
         }
         if !(at.inner.wo.z > 0.0) {

@@ -40,6 +40,11 @@ pub struct TwoSided<B> {
 
 impl<B: Prepare> TwoSided<B> {
     /// `inner` on both sides.
+    ///
+    /// Precondition: `inner` only reflects (its [`lobes`](Prepare::lobes) have no
+    /// [`Lobes::TRANSMISSION`]). A transmitting model, such as a dielectric, would be mirrored
+    /// as if its inside were its outside (its relative index not inverted from below): use it
+    /// as it is, since it already answers from both sides. Not checked (`new` is `const`).
     #[must_use]
     pub const fn new(inner: B) -> Self {
         Self { inner }
