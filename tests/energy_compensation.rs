@@ -916,7 +916,18 @@ fn fresnel_averages_are_exact() {
         let quad = cosine_weighted_average(|mu| lobe::fresnel::schlick(f0, mu));
         worst[0] = worst[0].max((f64::from(quad) - want).abs());
     }
-    for (n, k) in [(0.143f32, 3.983f32), (1.5, 0.0), (0.2, 1.0), (1.0, 0.0)] {
+    // With η < 1 and small κ the term bends sharply at μc = √(1 − η²) (a kink at κ = 0).
+    for (n, k) in [
+        (0.143f32, 3.983f32),
+        (1.5, 0.0),
+        (0.2, 1.0),
+        (1.0, 0.0),
+        (0.3, 0.0),
+        (0.3, 1e-3),
+        (0.7, 0.0),
+        (0.5, 0.01),
+        (0.2, 0.01),
+    ] {
         let c = Conductor {
             ior: ComplexIor::new(n, k).unwrap(),
         };
