@@ -376,7 +376,8 @@ scalar_conversions!(Alpha "width", Roughness "roughness", Ior "index", Eta "inde
 /// A conductor's complex index of refraction `η + iκ`, relative to the outside medium,
 /// per channel of the spectrum `S`.
 ///
-/// Valid ranges: `η ∈ (0, 1000]`, `κ ∈ [0, 1000]`, every channel.
+/// Valid ranges: `η ∈ [1.2e-38, 1000]` (positive and normal: `f32::MIN_POSITIVE` up), `κ ∈ [0, 1000]`,
+/// every channel.
 ///
 /// ```
 /// use lobe::{ComplexIor, Vec3};
@@ -427,10 +428,10 @@ impl<S: Spectrum> ComplexIor<S> {
     /// A complex index with real part `eta` and extinction coefficient `k`.
     ///
     /// # Errors
-    /// [`ParamError`] naming `eta` (range `(0, 1000]`) or `k` (range `[0, 1000]`) for the
+    /// [`ParamError`] naming `eta` (range `[1.2e-38, 1000]`, positive and normal) or `k` (range `[0, 1000]`) for the
     /// first channel that is NaN, infinite or out of range.
     pub fn new(eta: S, k: S) -> Result<Self, ParamError> {
-        let eta = check_spectrum("eta", eta, f32::MIN_POSITIVE, 1e3, "(0, 1000]")?;
+        let eta = check_spectrum("eta", eta, f32::MIN_POSITIVE, 1e3, "[1.2e-38, 1000]")?;
         let k = check_spectrum("k", k, 0.0, 1e3, "[0, 1000]")?;
         Ok(Self { eta, k })
     }
@@ -465,7 +466,7 @@ impl<S: Spectrum> ComplexIor<S> {
 const fn check_channels(eta: &[f32], k: &[f32]) -> Result<(), ParamError> {
     let mut i = 0;
     while i < eta.len() {
-        if let Err(e) = check("eta", eta[i], f32::MIN_POSITIVE, 1e3, "(0, 1000]") {
+        if let Err(e) = check("eta", eta[i], f32::MIN_POSITIVE, 1e3, "[1.2e-38, 1000]") {
             return Err(e);
         }
         i += 1;
@@ -534,7 +535,7 @@ mod tests {
             assert_eq!(Eta::new(v).unwrap_err().param(), "eta");
             assert_eq!(Ior::new(v).unwrap_err().param(), "ior");
             let e = ComplexIor::new(v, 1.0).unwrap_err();
-            assert_eq!((e.param(), e.range()), ("eta", "(0, 1000]"));
+            assert_eq!((e.param(), e.range()), ("eta", "[1.2e-38, 1000]"));
         }
         for v in BAD {
             assert_eq!(Roughness::new(v).unwrap_err().param(), "roughness");
@@ -554,7 +555,7 @@ mod tests {
         assert!(e.value().is_nan());
         assert_eq!(
             e.to_string(),
-            "invalid eta = NaN: expected a value in (0, 1000]"
+            "invalid eta = NaN: expected a value in [1.2e-38, 1000]"
         );
     }
 

@@ -30,7 +30,8 @@ struct Side {
 /// The single-scattering interface keeps, in importance transport (where the albedo is the
 /// fraction of the flux scattered), `E_out(μ)` of the light arriving from the outside and
 /// `E_in(μ)` of the light arriving from the inside — rough glass (GGX, `α = 1`, `η = 1.5`)
-/// only 0.70–0.92 from the outside and 0.42–0.57 from the inside. The missing energy is put
+/// only 0.70–0.89 from the outside and 0.42–0.52 from the inside for `θo ≤ 85°` (read off
+/// the tables; toward grazing incidence up to 0.995 and 0.60). The missing energy is put
 /// back by four lobes of Kulla & Conty's separable form, each symmetric in its two cosines:
 ///
 /// ```text

@@ -124,7 +124,7 @@ fn check_alpha(alpha: f32) -> Result<f32, ParamError> {
     if alpha > 0.0 && alpha <= ALPHA_MAX {
         Ok(alpha)
     } else {
-        Err(ParamError::new("alpha (compensated)", alpha, "[0.0001, 1]"))
+        Err(ParamError::new("alpha (compensated)", alpha, "(0, 1]"))
     }
 }
 
