@@ -31,6 +31,13 @@
 //! step in ([`bake::evaluation_mu`]); node `α = 0` holds the smooth surface's exact albedo
 //! (1, and the Fresnel reflectance for the coat's table).
 //!
+//! **Where the model's `f32` rounding shows.** The two first `μ` nodes of the narrowest
+//! non-zero width (`α = 2.4e-4`: `μ = 6.1e-5` and `2.4e-4`, within 0.02° of the horizon) hold
+//! the crate's own `f32` model there: 0.9556 and 0.8974 where an `f64` integration of the
+//! formulas gives 0.9526 and 0.8921 (a review's, with 1200² Gauss–Legendre points). In that
+//! corner `E` depends on `μ/α` alone, and the next row's nodes at the same ratio agree with
+//! `f64` to 5e-5: it is the model's rounding at a grazing narrow lobe, not the cubature.
+//!
 //! **Range.** `α ≤ 1` (an anisotropic distribution is read at its RMS width
 //! `√((αx² + αy²)/2)`, see [`TabulatedAlbedo`]); `η ∈ [1.01, 3]`
 //! and its reciprocals for the dielectric. The compensated models refuse parameters outside
