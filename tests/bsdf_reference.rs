@@ -29,7 +29,7 @@
 //! | --- | --- |
 //! | `eval` (Radiance context) | `eval(wo_lobe, wi_lobe) · \|wi_lobe.z\|` |
 //! | `eval_importance` | the same with the importance-mode model (for `diffuse` and `roughconductor` the model has no mode, and the record's two values are equal) |
-//! | `pdf` | `pdf(wo_lobe, wi_lobe)`; for `roughdielectric` the importance-mode model must give the identical `f32` |
+//! | `pdf` | `pdf(wo_lobe, wi_lobe)`; for `roughdielectric` the importance-mode model must give the identical `f32`; for Beckmann with the rational `G1`, times `G1_rational(wo_lobe) / G1_exact(wo_lobe)` (Mitsuba normalises the visible-normal density with the rational `G1`, lobe with the exact one that the sampler draws) |
 //!
 //! The product `eval · |cos|` is formed in `f64`, so it adds no rounding of its own.
 //!
@@ -212,7 +212,7 @@ impl Setup {
                     }
                     Kind::Beckmann => {
                         let m = Microfacet::new(self.beckmann(r), self.masking, f);
-                        Values::of(&m, &m, wo, wi)
+                        Values::of(&m, &m, wo, wi).in_mitsubas_pdf(&self.beckmann(r), wo)
                     }
                 }
             }
@@ -220,7 +220,9 @@ impl Setup {
                 let eta = Eta::new(field32(r, "eta")).unwrap_or_else(|e| panic!("eta of {r}: {e}"));
                 match Kind::of(r) {
                     Kind::Ggx => self.dielectric(self.ggx(r), eta, wo, wi),
-                    Kind::Beckmann => self.dielectric(self.beckmann(r), eta, wo, wi),
+                    Kind::Beckmann => self
+                        .dielectric(self.beckmann(r), eta, wo, wi)
+                        .in_mitsubas_pdf(&self.beckmann(r), wo),
                 }
             }
             other => panic!("unknown bsdf {other:?} in {r}"),
@@ -251,6 +253,8 @@ struct Values {
     pdf: f64,
     /// `pdf` of the importance-mode model.
     pdf_importance: f32,
+    /// `pdf` in Mitsuba's convention, the compared quantity (see [`Values::in_mitsubas_pdf`]).
+    pdf_mitsuba: f64,
 }
 
 impl Values {
@@ -262,14 +266,27 @@ impl Values {
             eval_importance: f64::from(importance.eval(wo, wi)) * cos,
             pdf: f64::from(pdf),
             pdf_importance: importance.pdf(wo, wi),
+            pdf_mitsuba: f64::from(pdf),
         }
+    }
+
+    /// With Walter's rational `G1`, Mitsuba normalises the visible-normal density it reports
+    /// as its pdf with that `G1`; lobe with the exact one, which normalises what both samplers
+    /// draw. Every lobe's density carries `G1(wo)` once, so Mitsuba's pdf is lobe's times
+    /// `G1_rational(wo) / G1_exact(wo)` (up to 0.31% apart); `G1` is even in `wo`.
+    fn in_mitsubas_pdf(mut self, d: &Beckmann, wo: Vec3) -> Self {
+        if d.masking() == BeckmannMasking::WalterRational {
+            let exact = d.with_masking(BeckmannMasking::Exact);
+            self.pdf_mitsuba *= f64::from(d.g1(wo)) / f64::from(exact.g1(wo));
+        }
+        self
     }
 
     fn get(&self, quantity: &str) -> f64 {
         match quantity {
             "eval" => self.eval,
             "eval_importance" => self.eval_importance,
-            "pdf" => self.pdf,
+            "pdf" => self.pdf_mitsuba,
             other => panic!("unknown quantity {other}"),
         }
     }
