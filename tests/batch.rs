@@ -140,12 +140,10 @@ impl Buffers for Vec3 {
     }
 }
 
-/// Equal bit for bit (`-0 == 0` counts as equal, as does NaN with NaN, which no lane has).
+/// Equal bit for bit, channel by channel: `-0` and `+0` differ (and a NaN equals only a NaN
+/// of the same bits, though no lane has one).
 fn same<S: Spectrum>(a: S, b: S) -> bool {
-    (0..S::CHANNELS).all(|c| {
-        let (x, y) = (a.channel(c), b.channel(c));
-        x == y || (x.is_nan() && y.is_nan())
-    })
+    (0..S::CHANNELS).all(|c| a.channel(c).to_bits() == b.channel(c).to_bits())
 }
 
 /// Checks every lane of `m`'s batched calls against its scalar calls, bit for bit, and returns
