@@ -16,7 +16,8 @@ pub enum InstructionSet {
     Avx512,
     /// AVX2 with FMA (x86-64-v3).
     Avx2,
-    /// The x86 target's own features (SSE2 on the default `x86_64` target).
+    /// The x86 target's own features (SSE2 on the default `x86_64` target): a CPU without
+    /// AVX2, or any x86 CPU in a build without the `std` feature.
     Baseline,
     /// A target other than x86: the loops are compiled for the target's own features.
     Target,
@@ -44,9 +45,19 @@ impl fmt::Display for InstructionSet {
 }
 
 /// The instruction set the batched calls run on this CPU: the widest of AVX-512, AVX2 with
-/// FMA and the baseline that the CPU has, on x86; [`InstructionSet::Target`] elsewhere.
+/// FMA and the baseline that the CPU has and the operating system has enabled, on x86 with
+/// the `std` feature; [`InstructionSet::Baseline`] on x86 without `std`;
+/// [`InstructionSet::Target`] elsewhere.
 ///
 /// The same check the batched calls act on, for a renderer's log or a benchmark's label.
+///
+/// Without `std` there is no safe way to ask whether the operating system saves the AVX
+/// registers (std's `is_x86_feature_detected!` reads XCR0 for that; pulp without std reads
+/// CPUID alone, which reports what the CPU has even where the OS, a kernel or UEFI
+/// application, has not enabled it, and an AVX instruction there faults). So a `no_std`
+/// build on x86 runs the loops compiled for the target's own features: SSE2 on the default
+/// `x86_64` target, AVX2 if the build itself enables it (`-C target-cpu`, `-C
+/// target-feature`).
 ///
 /// ```
 /// use lobe::batch::{InstructionSet, instruction_set};
@@ -60,7 +71,7 @@ impl fmt::Display for InstructionSet {
 #[inline]
 #[must_use]
 pub fn instruction_set() -> InstructionSet {
-    #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+    #[cfg(all(feature = "std", any(target_arch = "x86", target_arch = "x86_64")))]
     {
         match pulp::Arch::new() {
             pulp::Arch::V4(_) => InstructionSet::Avx512,
@@ -70,6 +81,10 @@ pub fn instruction_set() -> InstructionSet {
             // a variant here, and `tests/batch.rs` would catch the mismatch on such a CPU).
             _ => InstructionSet::Baseline,
         }
+    }
+    #[cfg(all(not(feature = "std"), any(target_arch = "x86", target_arch = "x86_64")))]
+    {
+        InstructionSet::Baseline
     }
     #[cfg(not(any(target_arch = "x86", target_arch = "x86_64")))]
     {

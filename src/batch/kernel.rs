@@ -20,10 +20,10 @@ pub(crate) trait Kernel {
 }
 
 /// A [`Kernel`] as a pulp operation.
-#[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+#[cfg(all(feature = "std", any(target_arch = "x86", target_arch = "x86_64")))]
 struct Pulp<K>(K);
 
-#[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+#[cfg(all(feature = "std", any(target_arch = "x86", target_arch = "x86_64")))]
 impl<K: Kernel> pulp::WithSimd for Pulp<K> {
     type Output = ();
 
@@ -33,13 +33,16 @@ impl<K: Kernel> pulp::WithSimd for Pulp<K> {
     }
 }
 
-/// Runs `kernel` compiled for the widest instruction set the CPU has (pulp checks the CPU
-/// once and caches the answer); elsewhere, compiled for the target.
+/// Runs `kernel` compiled for the widest instruction set the CPU and the operating system
+/// have, on x86 with `std` (pulp asks std's `is_x86_feature_detected!` once and caches the
+/// answer); otherwise compiled for the target: on other architectures, and on x86 without
+/// `std`, where pulp would read CPUID alone and could pick AVX that the OS has not enabled
+/// (the [module docs](super) say more).
 #[inline(always)]
 pub(crate) fn dispatch<K: Kernel>(kernel: K) {
-    #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+    #[cfg(all(feature = "std", any(target_arch = "x86", target_arch = "x86_64")))]
     pulp::Arch::new().dispatch(Pulp(kernel));
-    #[cfg(not(any(target_arch = "x86", target_arch = "x86_64")))]
+    #[cfg(not(all(feature = "std", any(target_arch = "x86", target_arch = "x86_64"))))]
     kernel.run();
 }
 

@@ -86,8 +86,14 @@
 //! this crate keeps `#![forbid(unsafe_code)]`; it was chosen over hand-written intrinsics for
 //! that, and over `multiversion`, whose generated code is `unsafe` in the calling crate. Other
 //! targets run the same loop compiled for the target's own features: the portable fallback.
-//! A `no_std` build on x86_64 still checks the CPU (pulp reads CPUID itself; on 32-bit x86
-//! without SSE, and in SGX enclaves, it goes by the compile-time target features).
+//! The dispatch needs the `std` feature (the default): without it, on x86, the batched calls
+//! run the baseline loop only, compiled for the target's own features (SSE2 on the default
+//! `x86_64` target; more if the build enables more, with `-C target-cpu` or `-C
+//! target-feature`). Using AVX takes both a CPU that has it and an operating system that saves
+//! its registers; std's feature detection checks both (XCR0), while pulp without std reads
+//! CPUID alone, which would pick AVX2 or AVX-512 in a kernel or a UEFI application that has
+//! not enabled them, where the first AVX instruction faults. Checking XCR0 needs `unsafe`
+//! (`xgetbv`), which this crate forbids, and pulp offers no safe check without std.
 //! [`instruction_set`] says which path this CPU runs. Every path gives the scalar path's
 //! numbers, bit for bit: `tests/batch.rs` checks the machine's own path, and CI, where QEMU's
 //! user mode can be installed, runs it again emulating a CPU with AVX2 and one with the
