@@ -146,12 +146,49 @@ fn same<S: Spectrum>(a: S, b: S) -> bool {
     (0..S::CHANNELS).all(|c| a.channel(c).to_bits() == b.channel(c).to_bits())
 }
 
-/// Checks every lane of `m`'s batched calls against its scalar calls, bit for bit, and returns
-/// the lobes the scalar samples came from (so that a caller can ask that every branch of a
-/// sampler was compared).
+/// Within `tol` of each other, relative to the larger, channel by channel (absolute below 1).
+fn close<S: Spectrum>(a: S, b: S, tol: f32) -> bool {
+    (0..S::CHANNELS).all(|c| {
+        let (x, y) = (a.channel(c), b.channel(c));
+        (x - y).abs() <= tol * x.abs().max(y.abs()).max(1.0)
+    })
+}
+
+/// Checks every lane of `m`'s batched calls against its scalar calls, bit for bit (the
+/// sample's lobe and `eta` too), and returns the lobes the scalar samples came from (so that a
+/// caller can ask that every branch of a sampler was compared). Where a lane's sample is not
+/// specular, its `(f, pdf)` must also be what `eval_batch` and `pdf_batch` give at the sampled
+/// direction (to `1e-3`: a sampler computes them by another route), so that a renderer can
+/// weigh it against a light sample; a specular lane's `pdf` is a lobe's probability instead,
+/// which the lobe flag tells apart.
 fn check<M: Batch + Bxdf<Spectrum = <M as lobe::bxdf::Prepare>::Spectrum>>(
     name: &str,
     m: &M,
+) -> Vec<Lobes>
+where
+    <M as lobe::bxdf::Prepare>::Spectrum: Buffers,
+{
+    check_lanes(name, m, true)
+}
+
+/// [`check`] for a stochastic layered model, whose sample carries its own random walk's
+/// estimates of `f` and `pdf`, not `eval`'s and `pdf`'s: compared with the scalar calls bit
+/// for bit only.
+fn check_stochastic<M: Batch + Bxdf<Spectrum = <M as lobe::bxdf::Prepare>::Spectrum>>(
+    name: &str,
+    m: &M,
+) -> Vec<Lobes>
+where
+    <M as lobe::bxdf::Prepare>::Spectrum: Buffers,
+{
+    check_lanes(name, m, false)
+}
+
+/// [`check`], comparing a non-specular sample with `eval` and `pdf` where `deterministic`.
+fn check_lanes<M: Batch + Bxdf<Spectrum = <M as lobe::bxdf::Prepare>::Spectrum>>(
+    name: &str,
+    m: &M,
+    deterministic: bool,
 ) -> Vec<Lobes>
 where
     <M as lobe::bxdf::Prepare>::Spectrum: Buffers,
@@ -168,6 +205,8 @@ where
     let mut pdf = vec![0.0; N];
     m.pdf_batch(wo.view(), wi.view(), &mut pdf).unwrap();
     let (mut swi, mut sf, mut spdf) = (Soa::zeros(N), S::<M>::store(N), vec![0.0; N]);
+    // Filled with values no lane writes, so that a lane the loop skipped shows.
+    let (mut slobe, mut seta) = (vec![Lobes::SPECULAR_TRANSMISSION; N], vec![-1.0; N]);
     m.sample_batch(
         wo.view(),
         u,
@@ -176,9 +215,18 @@ where
             wi: swi.view_mut(),
             f: S::<M>::lanes_mut(&mut sf),
             pdf: &mut spdf,
+            lobe: &mut slobe,
+            eta: &mut seta,
         },
     )
     .unwrap();
+    // The batched eval and pdf at the sampled directions.
+    let mut at_f = S::<M>::store(N);
+    m.eval_batch(wo.view(), swi.view(), S::<M>::lanes_mut(&mut at_f))
+        .unwrap();
+    let mut at_pdf = vec![0.0; N];
+    m.pdf_batch(wo.view(), swi.view(), &mut at_pdf).unwrap();
+    let mut non_specular = 0;
 
     let mut checked_samples = 0;
     let mut lobes = Vec::new();
@@ -205,22 +253,50 @@ where
                 assert!(
                     same(swi.get(k), s.wi)
                         && same(S::<M>::read(&sf, k), s.f)
-                        && same(spdf[k], s.pdf),
-                    "{name}: sample lane {k} (wo {o}, u {:?}, uc {}): batch ({}, {:?}, {}) vs scalar {s:?}",
+                        && same(spdf[k], s.pdf)
+                        && slobe[k] == s.lobe
+                        && same(seta[k], s.eta),
+                    "{name}: sample lane {k} (wo {o}, u {:?}, uc {}): batch ({}, {:?}, {}, {}, {}) vs scalar {s:?}",
                     i.u[k],
                     i.uc[k],
                     swi.get(k),
                     S::<M>::read(&sf, k),
-                    spdf[k]
+                    spdf[k],
+                    slobe[k],
+                    seta[k]
                 );
+                if deterministic && !s.lobe.is_specular() {
+                    non_specular += 1;
+                    assert!(
+                        close(S::<M>::read(&at_f, k), s.f, 1e-3) && close(at_pdf[k], s.pdf, 1e-3),
+                        "{name}: {} sample lane {k} (wo {o}, wi {}): (f, pdf) = ({:?}, {}), \
+                         eval_batch and pdf_batch there ({:?}, {})",
+                        s.lobe,
+                        s.wi,
+                        s.f,
+                        s.pdf,
+                        S::<M>::read(&at_f, k),
+                        at_pdf[k]
+                    );
+                }
             }
             None => assert!(
-                spdf[k] == 0.0 && swi.get(k) == Vec3::ZERO && S::<M>::read(&sf, k).is_black(),
-                "{name}: sample lane {k}: the scalar call has no sample, the batch has pdf {}",
-                spdf[k]
+                same(spdf[k], 0.0)
+                    && same(swi.get(k), Vec3::ZERO)
+                    && same(S::<M>::read(&sf, k), S::<M>::zero())
+                    && slobe[k] == Lobes::NONE
+                    && same(seta[k], 0.0),
+                "{name}: sample lane {k}: the scalar call has no sample, the batch has \
+                 ({}, {:?}, {}, {}, {})",
+                swi.get(k),
+                S::<M>::read(&sf, k),
+                spdf[k],
+                slobe[k],
+                seta[k]
             ),
         }
     }
+    eprintln!("{name}: {checked_samples} samples, {non_specular} not specular");
     // The comparison means something only where there are samples: at α = 10 most
     // reflections leave below the horizon, and about one lane in ten still samples.
     assert!(
@@ -239,6 +315,15 @@ fn assert_both_lobes(name: &str, lobes: &[Lobes]) {
             "{name}: no lane sampled {lobe:?} ({lobes:?})"
         );
     }
+}
+
+/// Asserts that the scalar samples `check` compared came from a delta lobe and from a lobe
+/// with a density: the batched lobe flags were compared on both kinds of lane.
+fn assert_specular_and_not(name: &str, lobes: &[Lobes]) {
+    assert!(
+        lobes.iter().any(|l| l.is_specular()) && lobes.iter().any(|l| !l.is_specular()),
+        "{name}: the samples came from {lobes:?} only"
+    );
 }
 
 fn a(x: f32) -> Alpha {
@@ -303,8 +388,9 @@ fn rough_dielectrics_equal_the_scalar_path() {
         for mode in [TransportMode::Radiance, TransportMode::Importance] {
             for eta in [1.5, 1.0 / 1.33, 1.0001, 1.0] {
                 for alpha in [0.3, 1e-4, 2.0] {
+                    // At η = 1 every sample passes straight through, a delta lobe.
                     check(
-                        "rough glass",
+                        &format!("rough glass η {eta}, α {alpha}, {masking:?}, {mode:?}"),
                         &RoughDielectric::new(Ggx::isotropic(a(alpha)), Eta::new(eta).unwrap())
                             .with_masking(masking)
                             .with_mode(mode),
@@ -341,7 +427,8 @@ fn the_other_models_equal_the_scalar_path() {
         )
         .unwrap(),
     );
-    check("Glazed", &Glazed::new(rgb, glass).unwrap());
+    let glazed = check("Glazed", &Glazed::new(rgb, glass).unwrap());
+    assert_specular_and_not("Glazed", &glazed);
     // The plastic's loops fix its coat's masking term: GGX and Beckmann coats, RGB and
     // monochrome, both lobes compared.
     let plastic = check(
@@ -398,7 +485,7 @@ fn the_combinators_and_layered_models_equal_the_scalar_path() {
     let rgb = Vec3::new(0.8, 0.5, 0.2);
     let glass = Eta::new(1.5).unwrap();
     let coated = CoatedDiffuse::coated_diffuse(rgb, Ggx::isotropic(a(0.3)), glass).unwrap();
-    check("CoatedDiffuse", &coated);
+    check_stochastic("CoatedDiffuse", &coated);
     check(
         "Mix(Lambert, Plastic)",
         &Mix::new(
@@ -408,7 +495,14 @@ fn the_combinators_and_layered_models_equal_the_scalar_path() {
         )
         .unwrap(),
     );
-    check("TwoSided(CoatedDiffuse)", &TwoSided::new(coated));
+    // A delta lobe and a diffuse one, picked per lane.
+    let mirror = Mirror::new(Schlick::new(Vec3::new(0.9, 0.7, 0.5)).unwrap());
+    let lobes = check(
+        "Mix(Lambert, Mirror)",
+        &Mix::new(Lambert::new(rgb).unwrap(), mirror, 0.4).unwrap(),
+    );
+    assert_specular_and_not("Mix(Lambert, Mirror)", &lobes);
+    check_stochastic("TwoSided(CoatedDiffuse)", &TwoSided::new(coated));
     check(
         "DiffuseTransmission",
         &DiffuseTransmission::new(rgb * 0.5, rgb * 0.4).unwrap(),

@@ -519,7 +519,8 @@ fn batched_calls_do_not_allocate() {
         z: &wiz,
     };
     let u = Vec2s { x: &ux, y: &uy };
-    let mut out: Vec<Vec<f32>> = vec![vec![0.0; N]; 7];
+    let mut out: Vec<Vec<f32>> = vec![vec![0.0; N]; 8];
+    let mut lobes = vec![lobe::bxdf::Lobes::NONE; N];
     let conductor = Microfacet::new(
         Ggx::isotropic(alpha(0.3)),
         Masking::HeightCorrelated,
@@ -532,7 +533,7 @@ fn batched_calls_do_not_allocate() {
     );
     let lambert = Lambert::new(Vec3::new(0.8, 0.5, 0.2)).unwrap();
     let glass = RoughDielectric::new(Ggx::isotropic(alpha(0.3)), eta(1.5));
-    // All three calls of an RGB model into the seven buffers.
+    // All three calls of an RGB model into the eight buffers and the lobes.
     fn rgb_calls<M: Batch<Spectrum = Vec3>>(
         m: &M,
         wo: Vec3s,
@@ -540,8 +541,9 @@ fn batched_calls_do_not_allocate() {
         u: Vec2s,
         uc: &[f32],
         o: &mut [Vec<f32>],
+        lobes: &mut [lobe::bxdf::Lobes],
     ) {
-        let [a, b, c, d, e, f, g] = o else {
+        let [a, b, c, d, e, f, g, h] = o else {
             unreachable!()
         };
         m.eval_batch(wo, wi, rgb(a, b, c)).unwrap();
@@ -550,14 +552,16 @@ fn batched_calls_do_not_allocate() {
             wi: rgb(a, b, c),
             f: rgb(d, e, f),
             pdf: g,
+            lobe: lobes,
+            eta: h,
         };
         m.sample_batch(wo, u, uc, out).unwrap();
     }
     let ((), calls) = count_calls(|| {
-        rgb_calls(&conductor, wo, wi, u, &i.uc, &mut out);
-        rgb_calls(&schlick, wo, wi, u, &i.uc, &mut out);
-        rgb_calls(&lambert, wo, wi, u, &i.uc, &mut out);
-        let [a, b, c, d, e, f, g] = &mut out[..] else {
+        rgb_calls(&conductor, wo, wi, u, &i.uc, &mut out, &mut lobes);
+        rgb_calls(&schlick, wo, wi, u, &i.uc, &mut out, &mut lobes);
+        rgb_calls(&lambert, wo, wi, u, &i.uc, &mut out, &mut lobes);
+        let [a, b, c, d, e, f, g, h] = &mut out[..] else {
             unreachable!()
         };
         glass.eval_batch(wo, wi, &mut *a).unwrap();
@@ -571,11 +575,13 @@ fn batched_calls_do_not_allocate() {
                     wi: rgb(c, d, e),
                     f: &mut *f,
                     pdf: g,
+                    lobe: &mut lobes,
+                    eta: h,
                 },
             )
             .unwrap();
     });
-    black_box(&out);
+    black_box((&out, &lobes));
     assert_eq!(calls, 0, "the batched calls allocated {calls} times");
 }
 

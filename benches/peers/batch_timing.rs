@@ -32,7 +32,7 @@ mod lanes;
 
 use lanes::PerLane;
 use lobe::batch::{Batch, SampleOut, Vec2s, Vec3s, Vec3sMut};
-use lobe::bxdf::{Lambert, Microfacet};
+use lobe::bxdf::{Lambert, Lobes, Microfacet};
 use lobe::fresnel::{Conductor, Fresnel, Schlick};
 use lobe::microfacet::{Ggx, Masking};
 use lobe::verify::Pcg32;
@@ -216,8 +216,9 @@ fn main() {
             let m = black_box(&m);
             let (wo, wi) = (vec3s(&c, 0, n), vec3s(&c, 3, n));
             let u = Vec2s { x: &c[6], y: &c[7] };
-            let mut o: Vec<Vec<f32>> = vec![vec![0.0; n]; 7];
-            let [a, b, cc, d, e, f, g] = &mut o[..] else {
+            let mut o: Vec<Vec<f32>> = vec![vec![0.0; n]; 8];
+            let mut lobes = vec![Lobes::NONE; n];
+            let [a, b, cc, d, e, f, g, h] = &mut o[..] else {
                 unreachable!()
             };
             let eval = time(n, || {
@@ -230,6 +231,8 @@ fn main() {
                     wi: Vec3sMut { x: a, y: b, z: cc },
                     f: Vec3sMut { x: d, y: e, z: f },
                     pdf: g,
+                    lobe: &mut lobes,
+                    eta: h,
                 };
                 m.sample_batch(wo, u, &c[8], out).unwrap();
             });

@@ -29,7 +29,7 @@ use inputs::{Inputs, N, inputs, two_sided};
 use interleave::{Kernel, ratio, rounds, spread};
 use lanes::PerLane;
 use lobe::batch::{Batch, Lanes, SampleOut, Vec2s, Vec3s, Vec3sMut};
-use lobe::bxdf::{Bxdf, Lambert, Microfacet, Plastic, Prepare, RoughDielectric};
+use lobe::bxdf::{Bxdf, Lambert, Lobes, Microfacet, Plastic, Prepare, RoughDielectric};
 use lobe::fresnel::{Conductor as ExactConductor, Schlick};
 use lobe::microfacet::{Ggx, Masking};
 use lobe::{Alpha, Eta, Vec3};
@@ -191,19 +191,23 @@ where
             }
         }),
         Kernel::new(format!("{name} sample"), N, {
-            // wi's three coordinates, the value's channels, the density.
-            let mut o = buffers(3 + channels + 1);
+            // wi's three coordinates, the value's channels, the density, eta; the lobes.
+            let mut o = buffers(3 + channels + 2);
+            let mut lobes = vec![Lobes::NONE; N];
             move || {
                 let (dir, rest) = o.split_at_mut(3);
-                let (f, pdf) = rest.split_at_mut(channels);
+                let (f, rest) = rest.split_at_mut(channels);
                 let [x, y, z] = dir else { unreachable!() };
+                let [pdf, eta] = rest else { unreachable!() };
                 let out = SampleOut {
                     wi: Vec3sMut { x, y, z },
                     f: B::Spectrum::slices(f),
-                    pdf: &mut pdf[0],
+                    pdf,
+                    lobe: &mut lobes,
+                    eta,
                 };
                 m.sample_batch(wo, u, &s.uc, out).unwrap();
-                black_box(&o);
+                black_box((&o, &lobes));
             }
         }),
     ]

@@ -2,7 +2,7 @@
 
 use super::SampleOut;
 use super::lanes::{Lanes, Vec2s, Vec3s, Vec3sMut};
-use crate::bxdf::{BxdfSample, Prepare};
+use crate::bxdf::{BxdfSample, Lobes, Prepare};
 use crate::spectrum::Spectrum;
 use core::marker::PhantomData;
 use glam::{Vec2, Vec3};
@@ -137,8 +137,8 @@ impl<M: Prepare + Clone, O: LaneOp<M>> Kernel for PdfKernel<'_, '_, M, O> {
     }
 }
 
-/// `(wi, f, pdf)[k] = sample(wo[k], u[k], uc[k])` over the first `n` lanes, zeros for no
-/// sample.
+/// `(wi, f, pdf, lobe, eta)[k] = sample(wo[k], u[k], uc[k])` over the first `n` lanes, zeros
+/// (and [`Lobes::NONE`]) for no sample.
 pub(crate) struct SampleKernel<'a, 'f, M: Prepare, O>
 where
     M::Spectrum: Lanes,
@@ -165,18 +165,26 @@ where
             y: &self.u.y[..n],
         };
         let uc = &self.uc[..n];
-        let SampleOut { wi, f, pdf } = self.out;
-        let (mut wi, mut f, pdf): (Vec3sMut<'_>, _, _) =
-            (wi.truncate(n), M::Spectrum::truncate(f, n), &mut pdf[..n]);
+        let SampleOut {
+            wi,
+            f,
+            pdf,
+            lobe,
+            eta,
+        } = self.out;
+        let (mut wi, mut f): (Vec3sMut<'_>, _) = (wi.truncate(n), M::Spectrum::truncate(f, n));
+        let (pdf, lobe, eta) = (&mut pdf[..n], &mut lobe[..n], &mut eta[..n]);
         let m = self.m.clone();
         for k in 0..n {
-            let (w, v, p) = match O::sample(&m, wo.get(k), u.get(k), uc[k]) {
-                Some(s) => (s.wi, s.f, s.pdf),
-                None => (Vec3::ZERO, M::Spectrum::zero(), 0.0),
+            let (w, v, p, l, e) = match O::sample(&m, wo.get(k), u.get(k), uc[k]) {
+                Some(s) => (s.wi, s.f, s.pdf, s.lobe, s.eta),
+                None => (Vec3::ZERO, M::Spectrum::zero(), 0.0, Lobes::NONE, 0.0),
             };
             wi.put(k, w);
             M::Spectrum::put(&mut f, k, v);
             pdf[k] = p;
+            lobe[k] = l;
+            eta[k] = e;
         }
     }
 }

@@ -110,7 +110,7 @@ mod models;
 pub use isa::{InstructionSet, instruction_set};
 pub use lanes::{Lanes, Vec2s, Vec3s, Vec3sMut, Vec4sMut};
 
-use crate::bxdf::Prepare;
+use crate::bxdf::{Lobes, Prepare};
 use core::fmt;
 use kernel::{EvalKernel, LaneOp, PdfKernel, Plain, SampleKernel, dispatch};
 
@@ -145,9 +145,16 @@ fn same_length(lens: &[usize]) -> Result<usize, LengthError> {
     }
 }
 
-/// Where [`Batch::sample_batch`] writes: the sampled directions, their values and their
-/// densities. A lane without a sample (the scalar `sample` returned `None`) has `pdf = 0`,
-/// `f = 0` and `wi = 0`.
+/// Where [`Batch::sample_batch`] writes: every field of the scalar
+/// [`BxdfSample`](crate::bxdf::BxdfSample), one slice per field (per coordinate, per channel).
+///
+/// As in the scalar sample, a lane whose [`lobe`](Self::lobe) is specular (a delta lobe) has
+/// `f` = the lobe's coefficient over `|cos θi|` and `pdf` = the probability of choosing that
+/// lobe, not a solid-angle density; a renderer that weighs samples by multiple importance
+/// sampling reads `lobe` to tell the two apart (with both kinds in one model, such as
+/// [`Glazed`](crate::bxdf::Glazed), a batch holds both). A lane without a sample (the scalar
+/// `sample` returned `None`) has every output zero: `wi = 0`, `f = 0`, `pdf = 0`,
+/// `lobe` = [`Lobes::NONE`] and `eta = 0`.
 #[derive(Debug)]
 pub struct SampleOut<'a, S: Lanes> {
     /// The sampled directions `wi`.
@@ -156,6 +163,11 @@ pub struct SampleOut<'a, S: Lanes> {
     pub f: S::Mut<'a>,
     /// The densities; `0` marks a lane without a sample.
     pub pdf: &'a mut [f32],
+    /// The lobes the samples came from; [`Lobes::NONE`] for a lane without a sample.
+    pub lobe: &'a mut [Lobes],
+    /// The relative indices `η_t/η_i` the paths crossed (`1` for reflection); `0` for a lane
+    /// without a sample.
+    pub eta: &'a mut [f32],
 }
 
 /// A model's `eval`, `pdf` and `sample` over batches: see the [module docs](self).
@@ -278,6 +290,8 @@ where
         out.wi.lanes()?,
         M::Spectrum::lanes(&out.f)?,
         out.pdf.len(),
+        out.lobe.len(),
+        out.eta.len(),
     ])?;
     let op = core::marker::PhantomData::<O>;
     dispatch(SampleKernel {
