@@ -19,7 +19,7 @@
 //! | `eval(m)` = `D` | [`d(m)`](NormalDistribution::d) |
 //! | `smith_g1(v, m)` | `0` if `(v·m)·v.z ≤ 0`, else [`g1(v)`](NormalDistribution::g1) (which is `1` at normal incidence, as Mitsuba's special case) |
 //! | `G(wi, wo, m)` | [`g2_separable`](NormalDistribution::g2_separable) times both orientation factors `χ⁺((v·m)·v.z)` |
-//! | `pdf(wi, m)`, `sample_visible = true` | [`d_visible(wi, m)`](NormalDistribution::d_visible) for `wi.z > 0`; `−d_visible(−wi, m)` for `wi.z < 0` |
+//! | `pdf(wi, m)`, `sample_visible = true` | [`d_visible(wi, m)`](NormalDistribution::d_visible) for `wi.z > 0`; `−d_visible(−wi, m)` for `wi.z < 0`; for Walter's rational `G1`, times `G1_rational(wi) / G1_exact(wi)` (lobe's density keeps the exact `G1`, which normalises what the sampler draws; Mitsuba's takes the rational one) |
 //! | `pdf(wi, m)`, `sample_visible = false` | `D(m)·max(0, m.z)`, the density of [`SampleDCos`](lobe::microfacet::SampleDCos) |
 //!
 //! Mitsuba's visible pdf `D·smith_g1(wi, m)·|wi·m|/wi.z` is negative for `wi.z < 0`
@@ -137,12 +137,18 @@ fn smith_g1<N: NormalDistribution + ?Sized>(n: &N, v: Vec3, m: Vec3, o: Orientat
 
 /// Mitsuba's `pdf(wi, m)` with `sample_visible = true`, `D·smith_g1(wi, m)·|wi·m|/wi.z`.
 /// For `wi.z < 0` it is negative: `−d_visible(−wi, m)`, because `G1` is even in `wi`.
+/// `d_visible` normalises with the exact `G1` (the view's `visible` factor), Mitsuba with the
+/// `G1` it masks with: for Walter's rational `G1` the two differ by `G1_rational / G1_exact`
+/// (up to 0.31%), which this puts back (for the exact masking functions it is 1 to rounding).
 fn visible_pdf<N: NormalDistribution + ?Sized>(n: &N, wi: Vec3, m: Vec3) -> f32 {
-    if wi.z < 0.0 {
-        -n.d_visible(-wi, m)
+    let (sign, w) = if wi.z < 0.0 { (-1.0, -wi) } else { (1.0, wi) };
+    let visible = n.view(w).visible;
+    let scale = if visible > 0.0 {
+        n.g1(w) / (visible * w.z)
     } else {
-        n.d_visible(wi, m)
-    }
+        1.0
+    };
+    sign * n.d_visible(w, m) * scale
 }
 
 /// lobe's values for the quantities of a `microfacet.json` record, in [`QUANTITIES`] order.
