@@ -40,7 +40,7 @@
 //! **Preconditions are not checked.** The scalar `eval`, `pdf` and `sample` assert unit
 //! directions and random numbers in `[0, 1]` in debug builds; the batched calls, like the
 //! `*_prepared` calls they run, check nothing (a check per lane would keep the loop from
-//! vectorising in the debug builds where tests run). A lane given other inputs still gets a
+//! vectorising in the debug builds where tests run). A lane given other finite inputs gets a
 //! finite, non-negative answer, the scalar path's.
 //!
 //! **Speed.** The loops are written so that the compiler vectorises them: inputs and outputs
