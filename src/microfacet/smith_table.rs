@@ -1,9 +1,9 @@
 //! Exact Smith masking for an isotropic distribution without a closed-form `Λ`, tabulated.
 
-use crate::math::{acos, atan2, cos, gauss_legendre, safe_sqrt, sin, sqrt, tan};
-use core::f32::consts::{FRAC_2_PI, FRAC_PI_2, TAU};
+use crate::math::{acos, atan2, cos, exp_m1, gauss_legendre, ln, ln_1p, safe_sqrt, sin, sqrt};
+use core::f32::consts::{FRAC_PI_4, LN_2, TAU};
 
-/// Entries of the table.
+/// Nodes of the table.
 const ENTRIES: usize = 128;
 
 /// Smith's `G1` of an isotropic distribution, computed at construction from the
@@ -11,49 +11,92 @@ const ENTRIES: usize = 128;
 /// determines the Smith masking function uniquely.
 ///
 /// The integral is reduced to one dimension by integrating `φm` in closed form, then
-/// evaluated by 8-point Gauss-Legendre quadrature on intervals of `θm` that grow
-/// geometrically from the lobe's width, with a break at the kink `θm = π/2 − θw`. The table
-/// holds `G1` at 128 values of `p = (2/π) atan(cot θ / β)`, where `β` is the lobe's median
-/// slope, so that the entries crowd where `G1` changes; lookups interpolate linearly.
+/// evaluated by 8-point Gauss-Legendre quadrature (see [`projected_area`]). The table holds
+/// `G1` at 128 values of `p = v / (v + s)`, `v = asinh(cot θ / lo)`, `s = asinh(hi / lo)`,
+/// uniformly spaced in `p ∈ [0, 1]`, where `lo` and `hi` are the slopes `tan θm` below which
+/// 10% and 90% of `D cos θ` lie. `p` is linear in `cot θ` near grazing (where `G1` is), then
+/// logarithmic across the lobe's slopes however many decades they span (GTR with `γ = 1` and
+/// `α = 1e-4` spans three and a half), then tends to 1 like `s / ln cot θ`, where `G1` is 1
+/// to within `(hi / cot θ)²`. Lookups interpolate by a Catmull-Rom cubic, with the values one
+/// node beyond each end extrapolated quadratically.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct SmithTable {
-    beta: f32,
-    g1: [f32; ENTRIES],
+    /// `lo`, the slope that `cot θ` is measured in.
+    lo: f32,
+    /// `s = asinh(hi / lo)`.
+    spread: f32,
+    /// `G1` at the nodes, after one extrapolated value and before another.
+    g1: [f32; ENTRIES + 2],
 }
 
 impl SmithTable {
     /// Tabulates the `G1` of the isotropic distribution `d(cos θm, sin θm)` (both given, so
-    /// that `d` can avoid `1 − cos²` near the normal) whose lobe has median
-    /// slope `beta` (the `tan θm` below which half of `D cos θ` lies) and width scale
-    /// `width` (where `D` changes fastest near the normal).
+    /// that `d` can avoid `1 − cos²` near the normal) whose lobe has median slope `beta` (the
+    /// `tan θm` below which half of `D cos θ` lies) and spreads its slopes like Beckmann's,
+    /// whose 10% and 90% slopes are 0.39 and 1.83 times the median; `width` as in
+    /// [`SmithTable::with_slopes`].
     pub(crate) fn new(d: impl Fn(f32, f32) -> f32, beta: f32, width: f32) -> Self {
-        let beta = beta.clamp(1e-4, 1e4);
-        let mut g1 = [0.0; ENTRIES];
-        for (i, g) in g1.iter_mut().enumerate() {
+        Self::with_slopes(d, 0.39 * beta, 1.83 * beta, width)
+    }
+
+    /// Tabulates the `G1` of the isotropic distribution `d(cos θm, sin θm)` whose slopes
+    /// `tan θm` lie below `lo` for 10% and below `hi` for 90% of `D cos θ`, and whose width
+    /// scale is `width` (`α`: `D` changes over `θm ≈ α` near the normal and, for `α > 1`,
+    /// over `cos θm ≈ 1/α` near grazing).
+    pub(crate) fn with_slopes(d: impl Fn(f32, f32) -> f32, lo: f32, hi: f32, width: f32) -> Self {
+        let lo = lo.clamp(1e-6, 1e6);
+        let spread = asinh(hi / lo).max(1.0);
+        let mut g1 = [0.0; ENTRIES + 2];
+        for i in 0..ENTRIES {
             let p = i as f32 / (ENTRIES - 1) as f32;
-            *g = if i == 0 {
+            g1[i + 1] = if i == 0 {
                 0.0
             } else if i == ENTRIES - 1 {
                 1.0
             } else {
-                // cot θw = β tan(π p / 2).
-                let cot = beta * tan(FRAC_PI_2 * p);
-                let inv = 1.0 / sqrt(1.0 + cot * cot);
-                let (cos_w, sin_w) = (cot * inv, inv);
+                // cot θw = lo sinh(v), v = s p / (1 − p); tan θw is 0 where sinh overflows.
+                let v = spread * p / (1.0 - p);
+                let tan_w = 1.0 / (lo * 0.5 * (exp_m1(v) - exp_m1(-v)));
+                let cos_w = 1.0 / sqrt(1.0 + tan_w * tan_w);
+                let sin_w = tan_w * cos_w;
                 (cos_w / projected_area(&d, cos_w, sin_w, width)).min(1.0)
             };
         }
-        Self { beta, g1 }
+        // Quadratic extrapolation, which the linear behaviour of G1 in p at grazing obeys.
+        g1[0] = 3.0 * (g1[1] - g1[2]) + g1[3];
+        g1[ENTRIES + 1] = 3.0 * (g1[ENTRIES] - g1[ENTRIES - 1]) + g1[ENTRIES - 2];
+        Self { lo, spread, g1 }
     }
 
     /// `G1` of a direction with `cos θ = cos_theta` and `sin θ = sin_theta ≥ 0`.
     #[inline]
     pub(crate) fn g1(&self, cos_theta: f32, sin_theta: f32) -> f32 {
-        let p = FRAC_2_PI * atan2(cos_theta.abs(), self.beta * sin_theta);
-        let x = p * (ENTRIES - 1) as f32;
+        let v = asinh(cos_theta.abs() / (self.lo * sin_theta));
+        // v = ∞ at the normal, where p = 1; NaN (a zero vector) counts as grazing.
+        let p = if v < f32::INFINITY {
+            v / (v + self.spread)
+        } else {
+            1.0
+        };
+        let x = p.max(0.0) * (ENTRIES - 1) as f32;
         let i = (x as usize).min(ENTRIES - 2);
         let f = x - i as f32;
-        self.g1[i] + f * (self.g1[i + 1] - self.g1[i])
+        let [a, b, c, e] = [self.g1[i], self.g1[i + 1], self.g1[i + 2], self.g1[i + 3]];
+        // Catmull-Rom through the nodes i − 1 .. i + 2 (padded indices i .. i + 3).
+        let g = b + 0.5
+            * f
+            * (c - a + f * (2.0 * a - 5.0 * b + 4.0 * c - e + f * (3.0 * (b - c) + e - a)));
+        g.clamp(0.0, 1.0)
+    }
+}
+
+/// `asinh x` for `x ≥ 0` (`+∞` at `+∞`), accurate near 0.
+#[inline]
+fn asinh(x: f32) -> f32 {
+    if x > 1e9 {
+        ln(x) + LN_2
+    } else {
+        ln_1p(x + x * x / (1.0 + sqrt(1.0 + x * x)))
     }
 }
 
@@ -68,41 +111,57 @@ pub(crate) fn lambda_from_g1(g1: f32) -> f32 {
 }
 
 /// `∫ max(0, w·m) D(m) dωm` for `w` at `(cos_w, sin_w)`: `∫ D(θ) sin θ Φ(θ) dθ` with `Φ` the
-/// closed-form `φ` integral, by Gauss-Legendre on geometrically growing intervals.
+/// closed-form `φ` integral, by Gauss-Legendre on intervals that grow geometrically away from
+/// both ends of `[0, π/2]`: in `θm` from the normal, starting at `width / 16` (at most 1/16),
+/// and in `ψ = π/2 − θm` from grazing, starting at `1 / (16 width)` (at most 1/16), so that
+/// a lobe at either end (`α > 1` puts `D`'s mass near grazing) is resolved; the two meet at
+/// `π/4`. The integrand is written in `ψ`, with `sin θm = cos ψ` and `cos θm = sin ψ`, on the
+/// grazing half. The interval holding the kink of `Φ` at `θm = π/2 − θw` (`ψ = θw`) is split
+/// there.
 pub(crate) fn projected_area(
     d: &impl Fn(f32, f32) -> f32,
     cos_w: f32,
     sin_w: f32,
     width: f32,
 ) -> f32 {
-    let kink = FRAC_PI_2 - atan2(sin_w, cos_w);
-    let mut lo = 0.0_f32;
-    let mut hi = (width.min(1.0) / 16.0).max(1e-6);
+    let near_normal = (width.min(1.0) / 16.0).max(1e-6);
+    let near_grazing = (1.0 / width).min(1.0) / 16.0;
+    half(d, cos_w, sin_w, near_normal, atan2(cos_w, sin_w), false)
+        + half(d, cos_w, sin_w, near_grazing, atan2(sin_w, cos_w), true)
+}
+
+/// The part of [`projected_area`] over `x ∈ [0, π/4]`, with `x = θm` or, `from_grazing`,
+/// `x = π/2 − θm`, on intervals `[0, h], [h, 2h], [2h, 4h], …`; `kink` is `Φ`'s kink in `x`.
+fn half(
+    d: &impl Fn(f32, f32) -> f32,
+    cos_w: f32,
+    sin_w: f32,
+    first: f32,
+    kink: f32,
+    from_grazing: bool,
+) -> f32 {
+    let f = |x: f32| {
+        let (s, c) = (sin(x), cos(x));
+        let (sin_m, cos_m) = if from_grazing { (c, s) } else { (s, c) };
+        d(cos_m, sin_m) * sin_m * phi_integral(cos_w * cos_m, sin_w * sin_m)
+    };
+    let (mut lo, mut hi) = (0.0_f32, first);
     let mut total = 0.0_f32;
-    while lo < FRAC_PI_2 {
-        let top = hi.min(FRAC_PI_2);
-        // Split the interval at the kink of Φ. Beyond it Φ departs from 2πA like
-        // (θ − kink)^(3/2); θ = kink + (top − kink) s² makes that smooth in s.
+    while lo < FRAC_PI_4 {
+        let top = hi.min(FRAC_PI_4);
         if kink > lo && kink < top {
-            total += gauss_legendre(lo, kink, |t| integrand(d, t, cos_w, sin_w));
-            let span = top - kink;
-            total += gauss_legendre(0.0, 1.0, |s| {
-                2.0 * s * span * integrand(d, kink + span * s * s, cos_w, sin_w)
-            });
+            // On one side of the kink Φ departs from 2πA like |x − kink|^(3/2);
+            // x = kink ∓ span s² makes both sides smooth in s.
+            let (left, right) = (kink - lo, top - kink);
+            total += gauss_legendre(0.0, 1.0, |s| 2.0 * s * left * f(kink - left * s * s));
+            total += gauss_legendre(0.0, 1.0, |s| 2.0 * s * right * f(kink + right * s * s));
         } else {
-            total += gauss_legendre(lo, top, |t| integrand(d, t, cos_w, sin_w));
+            total += gauss_legendre(lo, top, f);
         }
         lo = top;
         hi = top * 2.0;
     }
     total
-}
-
-/// `D(θm) sin θm Φ(θw, θm)`.
-#[inline]
-fn integrand(d: &impl Fn(f32, f32) -> f32, theta: f32, cos_w: f32, sin_w: f32) -> f32 {
-    let (s, c) = (sin(theta), cos(theta));
-    d(c, s) * s * phi_integral(cos_w * c, sin_w * s)
 }
 
 /// `Φ = ∫₀^2π max(0, A + B cos φ) dφ` for `A ≥ 0`, `B ≥ 0`: `2πA` when `A ≥ B`, else
