@@ -72,11 +72,11 @@ impl SmithTable {
     #[inline]
     pub(crate) fn g1(&self, cos_theta: f32, sin_theta: f32) -> f32 {
         let v = asinh(cos_theta.abs() / (self.lo * sin_theta));
-        // v = ∞ at the normal, where p = 1; NaN (a zero vector) counts as grazing.
-        let p = if v < f32::INFINITY {
-            v / (v + self.spread)
-        } else {
+        // v = ∞ at the normal, where p = 1; NaN (a zero vector) counts as grazing (`max`).
+        let p = if v == f32::INFINITY {
             1.0
+        } else {
+            v / (v + self.spread)
         };
         let x = p.max(0.0) * (ENTRIES - 1) as f32;
         let i = (x as usize).min(ENTRIES - 2);
