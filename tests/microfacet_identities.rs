@@ -192,9 +192,10 @@ fn gtr_with_gamma_two_is_ggx() {
             worst = worst.max((gtr.g1(w) - ggx.g1(w)).abs());
         }
     }
-    // The table's interpolation error, the figure `Gtr`'s docs quote (measured 7.05e-5).
+    // The table's accuracy, the bound `Gtr`'s docs state (3e-5; tests/microfacet_gtr.rs
+    // measures it against f64 references over the whole range).
     eprintln!("GTR(γ=2) vs GGX: max |ΔG1| = {worst:.3e}");
-    assert!(worst < 7.5e-5, "max |ΔG1| = {worst}");
+    assert!(worst <= 3e-5, "max |ΔG1| = {worst}");
 }
 
 /// Normalised Blinn-Phong and Beckmann of the same `α` (Walter et al. 2007, eq. 32): close for
