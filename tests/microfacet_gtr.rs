@@ -244,6 +244,23 @@ fn directions() -> Vec<(Vec3, f64, f64)> {
         .collect()
 }
 
+/// The largest `|G1 − G1_reference|` of `d` over `dirs`, with the angle `θ` (degrees) where
+/// it is, against [`g1_reference`] for the `f64` density `reference(cos² θm, sin² θm)`.
+fn worst_g1_error(
+    d: &impl NormalDistribution,
+    reference: &impl Fn(f64, f64) -> f64,
+    dirs: &[(Vec3, f64, f64)],
+) -> (f32, f64) {
+    let mut worst = (0.0_f32, 0.0);
+    for &(w, c, s) in dirs {
+        let err = (d.g1(w) - g1_reference(reference, c, s) as f32).abs();
+        if err > worst.0 {
+            worst = (err, c.acos().to_degrees());
+        }
+    }
+    worst
+}
+
 /// The tabulated `G1` against exact Smith `G1` in `f64` over the whole domain of `α` and
 /// `γ`: GGX's closed form at `γ = 2` (Heitz 2014, eq. 72, `G1 = 2 / (1 + √(1 + α² tan² θ))`)
 /// from `α = 1e-4` to 10, and the quadrature of the projected-area identity elsewhere,
@@ -295,15 +312,7 @@ fn tabulated_g1_matches_f64_references() {
         .into_iter()
         .flat_map(|a| gammas.into_iter().map(move |g| (a, g)))
     {
-        let d = gtr(alpha, gamma);
-        let dd = d_f64(alpha, gamma);
-        let mut worst = (0.0_f32, 0.0);
-        for &(w, c, s) in &dirs {
-            let err = (d.g1(w) - g1_reference(&dd, c, s) as f32).abs();
-            if err > worst.0 {
-                worst = (err, c.acos().to_degrees());
-            }
-        }
+        let worst = worst_g1_error(&gtr(alpha, gamma), &d_f64(alpha, gamma), &dirs);
         eprintln!(
             "γ = {gamma}, α = {alpha:e}: max |ΔG1| = {:.2e} at θ = {:.4}°",
             worst.0, worst.1
@@ -338,13 +347,7 @@ fn blinn_phong_exact_smith_matches_the_f64_reference() {
             };
             (p + 2.0) / (2.0 * PI) * cos_p
         };
-        let mut worst = (0.0_f32, 0.0);
-        for &(w, c, s) in &dirs {
-            let err = (d.g1(w) - g1_reference(&dd, c, s) as f32).abs();
-            if err > worst.0 {
-                worst = (err, c.acos().to_degrees());
-            }
-        }
+        let worst = worst_g1_error(&d, &dd, &dirs);
         eprintln!(
             "Blinn-Phong α = {alpha:e}: max |ΔG1| = {:.2e} at θ = {:.4}°",
             worst.0, worst.1
