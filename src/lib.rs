@@ -59,7 +59,7 @@
 //!
 //! | feature | default | gives |
 //! | --- | --- | --- |
-//! | `std` | yes | the standard library's float functions and `std::error::Error` for [`ParamError`] |
+//! | `std` | yes | the standard library's float functions, `std::error::Error` for [`ParamError`], and [`batch`]'s run-time AVX2/AVX-512 dispatch on x86 (without it: the baseline loop) |
 //! | `libm` | no | the `no_std` math path (`--no-default-features --features libm`) |
 //! | `verify` | no | [`verify`]: the law checks, Monte Carlo estimators with standard errors, the chi-square test, and the seeded [`Pcg32`](verify::Pcg32), which implements `rand_core`'s `RngCore` and `SeedableRng` (implies `std`) |
 //! | `proptest` | no | `verify::strategies`: proptest strategies for directions, α, η and complex indices (implies `verify`) |

@@ -327,16 +327,16 @@ fn rational_masking_and_anisotropy_are_measured() {
             });
         }
     }
-    // The figure `CompensatedMicrofacet`'s docs quote (measured 3.2e-3, |E − 1| + kσ at
-    // α = 0.5, 85°; the bar leaves it two standard errors of the worst point). The tables
-    // hold the exact Λ's albedo, and the rational G1 masks less, so the compensated model
-    // reflects up to 0.27% more than it receives. (Before the model's density kept the
-    // exact G1, the single-scattering estimate by its own sampler was biased by
-    // G1_exact/G1_rational at wo and showed 1.7e-3.)
+    // The figure `CompensatedMicrofacet`'s docs quote (measured 3.22e-3, |E − 1| + kσ at
+    // α = 0.5, 85°; the bar leaves it two standard errors, 2 × 1.6e-4, of the worst point).
+    // The tables hold the exact Λ's albedo, and the rational G1 is within 3.2e-3 of the
+    // exact one either way, so the compensated model reflects from 0.21% less to 0.27% more
+    // than it receives. (Before the model's density kept the exact G1, the single-scattering
+    // estimate by its own sampler was biased by G1_exact/G1_rational at wo and showed 1.7e-3.)
     judge(
         "Beckmann with Walter's rational G1, F = 1",
         &rows,
-        0.0035,
+        0.0036,
         true,
     );
 

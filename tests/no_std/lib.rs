@@ -21,7 +21,9 @@ pub extern "C" fn lobe_no_std_fresnel(u0: f32, u1: f32) -> f32 {
         return -1.0;
     };
     let f: Vec3 = fresnel::conductor(w.z, &metal);
-    fresnel::dielectric(w.z, eta) + fresnel::schlick(0.04, w.z) + f.x
+    fresnel::dielectric(w.z, eta)
+        + fresnel::schlick(0.04, w.z)
+        + f.x
         + sampling::cosine_hemisphere_pdf(w.z)
 }
 
@@ -38,8 +40,8 @@ fn panic(_: &core::panic::PanicInfo) -> ! {
 /// tests/no_std/Cargo.toml`.
 #[cfg(test)]
 mod tests {
-    use lobe::batch::{Batch, InstructionSet, instruction_set};
     use lobe::Vec3;
+    use lobe::batch::{Batch, InstructionSet, instruction_set};
     use lobe::bxdf::{Bxdf, Lambert};
 
     /// Without std there is no safe check that the OS has enabled AVX (std's reads XCR0;
@@ -56,7 +58,11 @@ mod tests {
         // And a batched call runs there, with the scalar call's value.
         let m = Lambert::new(0.5_f32).unwrap();
         let (x, y, z) = ([0.0, 0.6], [0.6, 0.0], [0.8, 0.8]);
-        let wo = lobe::batch::Vec3s { x: &x, y: &y, z: &z };
+        let wo = lobe::batch::Vec3s {
+            x: &x,
+            y: &y,
+            z: &z,
+        };
         let mut f = [0.0; 2];
         m.eval_batch(wo, wo, &mut f).unwrap();
         let one = m.eval(Vec3::new(0.6, 0.0, 0.8), Vec3::new(0.6, 0.0, 0.8));
