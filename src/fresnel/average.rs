@@ -93,8 +93,9 @@ fn cosine_weighted_graded(f: &impl Fn(f32) -> f32, mu_c: f32) -> f32 {
         let toward_hi = lo == 0.0;
         let len = hi - lo;
         // Edges at μc ∓ len·4⁻ʲ, j = 0..=GRADED_LEVELS, then the last panel to μc itself.
+        // (4⁻ʲ by repeated quartering, exact in f32: `powi` is not in `core`.)
         let edge = |j: i32| {
-            let d = len * 0.25f32.powi(j);
+            let d = (0..j).fold(len, |d, _| d * 0.25);
             if toward_hi { hi - d } else { lo + d }
         };
         for j in 0..GRADED_LEVELS {
