@@ -23,17 +23,7 @@ const PANELS: usize = 8;
 /// build at construction ([`Glazed`](crate::bxdf::Glazed), [`Plastic`](crate::bxdf::Plastic)).
 #[must_use]
 pub fn cosine_weighted_average<S: Spectrum>(f: impl Fn(f32) -> S) -> S {
-    let half = 0.5 / PANELS as f32;
-    let mut sum = S::zero();
-    for p in 0..PANELS {
-        let mid = (2 * p + 1) as f32 * half;
-        for (x, w) in NODES.iter().zip(WEIGHTS) {
-            for mu in [mid - half * x, mid + half * x] {
-                sum += f(mu) * (w * half * mu);
-            }
-        }
-    }
-    sum * 2.0
+    cosine_weighted_part(&f, 0.0, 1.0, PANELS)
 }
 
 /// A Fresnel term whose hemispherical average is known:
@@ -66,10 +56,10 @@ impl<S: Spectrum> FresnelAverage for Schlick<S> {
 }
 
 /// `2 ∫ F(μ) μ dμ` over `[lo, hi]` by the 8-point Gauss–Legendre rule on `panels` equal
-/// panels (with 8 panels on `[0, 1]`, the same numbers as [`cosine_weighted_average`]).
-fn cosine_weighted_part(f: &impl Fn(f32) -> f32, lo: f32, hi: f32, panels: usize) -> f32 {
+/// panels ([`cosine_weighted_average`] is this on `[0, 1]` with 8 panels).
+fn cosine_weighted_part<S: Spectrum>(f: &impl Fn(f32) -> S, lo: f32, hi: f32, panels: usize) -> S {
     let half = 0.5 / panels as f32 * (hi - lo);
-    let mut sum = 0.0;
+    let mut sum = S::zero();
     for p in 0..panels {
         let mid = lo + (2 * p + 1) as f32 * half;
         for (x, w) in NODES.iter().zip(WEIGHTS) {
@@ -88,7 +78,7 @@ const GRADED_LEVELS: i32 = 10;
 /// geometrically (by 4) toward `μc` from each side down to 4⁻¹⁰ of the side's length: a bend
 /// there, a kink or a square-root edge, is resolved as a smooth integrand's would be.
 fn cosine_weighted_graded(f: &impl Fn(f32) -> f32, mu_c: f32) -> f32 {
-    let mut sum = 0.0;
+    let mut sum = 0.0_f32;
     for (lo, hi) in [(0.0, mu_c), (mu_c, 1.0)] {
         let toward_hi = lo == 0.0;
         let len = hi - lo;
