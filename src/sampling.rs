@@ -42,6 +42,15 @@ const INV_4PI: f32 = 0.25 * FRAC_1_PI;
 /// The largest `f32` below 1, where a number meant to be uniform in `[0, 1)` is clamped.
 pub(crate) const ONE_MINUS_EPSILON: f32 = 1.0 - f32::EPSILON / 2.0;
 
+/// Whether the lobe-choice number `uc` picks the branch of probability `p` (the one that owns
+/// `[0, p)`): `uc < p`, with `uc = 1` read as the largest `f32` below 1, so that a branch of
+/// zero weight is never picked, at any `uc ∈ [0, 1]` (a NaN reads as 1 too).
+#[inline(always)]
+#[must_use]
+pub(crate) fn picks(uc: f32, p: f32) -> bool {
+    uc.min(ONE_MINUS_EPSILON) < p
+}
+
 /// `u ∈ [lo, lo + width)` carried back onto `[0, 1)`: once `u` has chosen the branch that
 /// owns that interval, what is left of it is a fresh uniform number for the branch's own
 /// sampler (the reuse of a lobe-selection sample, as in pbrt-v4's `LayeredBxDF`). Clamped to

@@ -281,3 +281,59 @@ fn debug_builds_refuse_a_random_number_outside_the_unit_interval() {
         .unwrap()
         .sample(Vec3::Z, Vec2::new(1.5, 0.5), 0.5);
 }
+
+/// A lobe choice `uc = 1` (which the debug checks accept) is read as the largest `f32` below
+/// 1 by every model: the same sample, bit for bit, so that a lobe of zero weight is never
+/// picked. (Before, nine models compared `uc < p` directly: a smooth dielectric under total
+/// internal reflection, `p = 1`, chose the transmission of probability 0 and drew nothing.)
+/// The layered models are left out: their random walk is seeded with `uc`'s bits, so `uc = 1`
+/// starts another, equally distributed, walk.
+#[test]
+fn a_lobe_choice_of_one_is_the_largest_number_below_it() {
+    let below_one = 1.0 - f32::EPSILON / 2.0;
+    let key = |s: Option<lobe::bxdf::BxdfSample<f32>>| {
+        s.map(|s| {
+            (
+                s.wi.to_array().map(f32::to_bits),
+                s.f.to_bits(),
+                s.pdf.to_bits(),
+                s.lobe,
+                s.eta.to_bits(),
+            )
+        })
+    };
+    let ior = ComplexIor::new(0.2, 3.9).unwrap();
+    let dirs = [
+        Vec3::Z,
+        -Vec3::Z,
+        Vec3::new(0.6, 0.0, 0.8),
+        Vec3::new(0.0, 0.6, -0.8),
+        Vec3::new(0.99, 0.0, 0.141).normalize(),
+    ];
+    let (mut compared, mut some) = (0, 0);
+    for kind in (0..MODELS).filter(|k| ![20, 21, 22].contains(k)) {
+        for a in [0.05, 0.5] {
+            let a = Alpha::new(a).unwrap();
+            for eta in [1.0 / 1.5, 1.5] {
+                let eta = Eta::new(eta).unwrap();
+                for t in [0.0, 0.5, below_one] {
+                    let bxdf = model(kind, a, a, eta, ior, t);
+                    for wo in dirs {
+                        for u in [Vec2::splat(0.25), Vec2::new(0.7, 0.1)] {
+                            let at_one = key(bxdf.sample(wo, u, 1.0));
+                            assert_eq!(
+                                at_one,
+                                key(bxdf.sample(wo, u, below_one)),
+                                "model {kind}, α {a:?}, η {eta:?}, t {t}, wo {wo:?}, u {u:?}"
+                            );
+                            compared += 1;
+                            some += usize::from(at_one.is_some());
+                        }
+                    }
+                }
+            }
+        }
+    }
+    assert_eq!(compared, (MODELS as usize - 3) * 2 * 2 * 3 * 5 * 2);
+    assert!(some > compared / 3, "{some} samples of {compared}");
+}

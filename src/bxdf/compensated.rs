@@ -306,7 +306,7 @@ impl<D: NormalDistribution, F: FresnelAverage> CompensatedMicrofacet<D, F> {
             return None;
         }
         let p = at.probability;
-        let diffuse = uc < p;
+        let diffuse = crate::sampling::picks(uc, p);
         // The single-scattering lobe's value and density at wi: from its own sample when it
         // drew wi (the numbers its eval and pdf give), else evaluated together.
         let (wi, f, pdf, lobe) = if LANES {

@@ -287,9 +287,9 @@ impl<D: NormalDistribution> CompensatedDielectric<D> {
             return None;
         }
         let p = at.probability;
-        let (wi, f, pdf, lobe, eta) = if uc < p {
+        let (wi, f, pdf, lobe, eta) = if crate::sampling::picks(uc, p) {
             let (side, _, _) = self.side(wo.z > 0.0);
-            let transmit = uc < p * side.transmitted;
+            let transmit = crate::sampling::picks(uc, p * side.transmitted);
             let mut wi = cosine_hemisphere(u);
             // Same side as wo for reflection, the other for transmission.
             if (wo.z > 0.0) == transmit {

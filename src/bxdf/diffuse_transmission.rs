@@ -2,7 +2,7 @@
 
 use super::{BxdfSample, Lobes, Prepare, usable_pdf};
 use crate::param::{ParamError, unit_interval};
-use crate::sampling::{ONE_MINUS_EPSILON, cosine_hemisphere, cosine_hemisphere_pdf};
+use crate::sampling::{cosine_hemisphere, cosine_hemisphere_pdf, picks};
 use crate::spectrum::Spectrum;
 use core::f32::consts::FRAC_1_PI;
 use glam::{Vec2, Vec3};
@@ -135,8 +135,7 @@ impl<S: Spectrum> Prepare for DiffuseTransmission<S> {
         if wo.z == 0.0 {
             return None;
         }
-        // uc = 1 (accepted) must not pick a side of zero weight.
-        let reflect = uc.min(ONE_MINUS_EPSILON) < self.p_reflect;
+        let reflect = picks(uc, self.p_reflect);
         let mut wi = cosine_hemisphere(u);
         // Reflection stays on wo's side, transmission goes to the other.
         if (wo.z < 0.0) == reflect {

@@ -117,7 +117,7 @@ impl<S: Spectrum> Prepare for Glazed<S> {
             return None;
         }
         let (p_mirror, f) = at.state;
-        if uc < p_mirror {
+        if crate::sampling::picks(uc, p_mirror) {
             let wi = Vec3::new(-wo.x, -wo.y, wo.z);
             return Some(BxdfSample::new(
                 wi,

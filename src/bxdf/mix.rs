@@ -2,7 +2,7 @@
 
 use super::{At, BxdfSample, Lobes, Prepare, usable_pdf};
 use crate::param::ParamError;
-use crate::sampling::{ONE_MINUS_EPSILON, reuse_uniform};
+use crate::sampling::{picks, reuse_uniform};
 use crate::spectrum::Spectrum;
 use glam::{Vec2, Vec3};
 
@@ -138,8 +138,7 @@ impl<A: Prepare, B: Prepare<Spectrum = A::Spectrum>> Prepare for Mix<A, B> {
         uc: f32,
     ) -> Option<BxdfSample<A::Spectrum>> {
         let wa = 1.0 - self.weight;
-        // uc = 1 (accepted) must not pick b when its weight is 0.
-        let choose_a = uc.min(ONE_MINUS_EPSILON) < wa;
+        let choose_a = picks(uc, wa);
         let (s, p) = if choose_a {
             let uc = reuse_uniform(uc, 0.0, wa);
             (self.a.sample_prepared(&at.state.0, u, uc)?, wa)

@@ -158,9 +158,7 @@ macro_rules! diffuse_glossy_model {
                 if !(wo.z > 0.0) {
                     return None;
                 }
-                // uc = 1 (accepted) must not pick the glossy lobe when its weight is 0.
-                let uc = uc.min($crate::sampling::ONE_MINUS_EPSILON);
-                let (wi, kind) = if uc < self.p_diffuse {
+                let (wi, kind) = if $crate::sampling::picks(uc, self.p_diffuse) {
                     (
                         $crate::sampling::cosine_hemisphere(u),
                         Lobes::DIFFUSE_REFLECTION,
@@ -473,8 +471,9 @@ pub trait Bxdf {
     fn eval(&self, wo: Vec3, wi: Vec3) -> Self::Spectrum;
 
     /// Draws `wi` for the viewer direction `wo`, with `u` uniform in `[0, 1)²` for the
-    /// direction and `uc` uniform in `[0, 1)` for the choice of lobe; `None` when no direction
-    /// can be produced (the pdf's missing mass).
+    /// direction and `uc` uniform in `[0, 1)` for the choice of lobe (the crate's models read
+    /// `uc = 1` as the largest `f32` below 1); `None` when no direction can be produced (the
+    /// pdf's missing mass).
     #[must_use]
     fn sample(&self, wo: Vec3, u: Vec2, uc: f32) -> Option<BxdfSample<Self::Spectrum>>;
 

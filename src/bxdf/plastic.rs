@@ -316,7 +316,7 @@ impl<D, S: Spectrum, C: Prepare<Spectrum = f32>> Plastic<D, S, C> {
         let st = &at.state;
         // The coat's value and density at wi: from its own sample when it drew wi (the same
         // numbers its eval and pdf give), else evaluated together with one D.
-        let (wi, coat_f, coat_pdf, lobe) = if uc < st.p_coat {
+        let (wi, coat_f, coat_pdf, lobe) = if crate::sampling::picks(uc, st.p_coat) {
             // The coat's own lobe choice (a compensated coat has two, its multiple-scattering
             // lobe diffuse), from what is left of uc, and the coat's label for it.
             let s = O::sample(&self.coat, &st.coat, u, reuse_uniform(uc, 0.0, st.p_coat))?;

@@ -290,14 +290,15 @@ impl<D: NormalDistribution> RoughDielectric<D> {
         }
         let m = self.distribution.sample(&at.state, u);
         let f = dielectric(wo.dot(m), self.eta);
-        let wi = if uc < f {
+        let reflect = crate::sampling::picks(uc, f);
+        let wi = if reflect {
             reflect_away(wo, m)
         } else {
             refract_away(wo, m, self.eta)?
         };
         // Evaluate at the configuration of (wo, wi), as `eval` and `pdf` do.
         let c = self.configuration(wo, wi)?;
-        if c.reflection != (uc < f) {
+        if c.reflection != reflect {
             return None;
         }
         // D and F(wo·h) once, for both the value and the density.

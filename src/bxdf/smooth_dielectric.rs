@@ -60,7 +60,7 @@ impl SmoothDielectric {
             return None;
         }
         let r = dielectric(wo.z, self.eta);
-        if uc < r {
+        if crate::sampling::picks(uc, r) {
             let wi = Vec3::new(-wo.x, -wo.y, wo.z);
             return Some(BxdfSample::new(
                 wi,

@@ -54,7 +54,7 @@ impl ThinDielectric {
             return None;
         }
         let r = self.reflectance(wo.z);
-        let (wi, p, lobe) = if uc < r {
+        let (wi, p, lobe) = if crate::sampling::picks(uc, r) {
             (Vec3::new(-wo.x, -wo.y, wo.z), r, Lobes::SPECULAR_REFLECTION)
         } else {
             (-wo, 1.0 - r, Lobes::SPECULAR_TRANSMISSION)
