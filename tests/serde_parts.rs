@@ -161,7 +161,12 @@ fn blinn_phong_ndf_refusals_name_the_field() {
     );
     assert_refused::<BlinnPhongNdf>(
         r#"{ "alpha": 0 }"#,
-        "invalid alpha = 0: expected a value in [0.0001, 10]",
+        "invalid alpha = 0: expected a value in [0.0001, 1] (Blinn-Phong)",
+    );
+    // Beyond Alpha's own range too, the range named is Blinn-Phong's (it said [0.0001, 10]).
+    assert_refused::<BlinnPhongNdf>(
+        r#"{ "alpha": 50 }"#,
+        "invalid alpha = 50: expected a value in [0.0001, 1] (Blinn-Phong)",
     );
     assert_refused::<BlinnPhongNdf>(
         r#"{ "exponent": -1 }"#,

@@ -23,7 +23,7 @@ const INCREMENT: u64 = 0x1405_7b7e_f767_814f;
 /// Stafford's variant 13 of the MurmurHash3 finaliser (as in SplitMix64): a bijection of
 /// `u64` in which every input bit affects every output bit.
 #[inline(always)]
-fn mix64(mut z: u64) -> u64 {
+pub(crate) fn mix64(mut z: u64) -> u64 {
     z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
     z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
     z ^ (z >> 31)

@@ -7,6 +7,9 @@ use crate::param::{Alpha, ParamError};
 use core::f32::consts::FRAC_1_PI;
 use glam::{Vec2, Vec3};
 
+/// The range of a Blinn-Phong distribution's `α`, as its refusals name it.
+pub(crate) const BLINN_PHONG_ALPHA: &str = "[0.0001, 1] (Blinn-Phong)";
+
 /// The normalised Blinn-Phong distribution of microfacet normals:
 ///
 /// ```text
@@ -52,7 +55,7 @@ impl BlinnPhongNdf {
     pub fn new(alpha: Alpha) -> Result<Self, ParamError> {
         let a = alpha.get();
         if a > 1.0 {
-            return Err(ParamError::new("alpha", a, "[0.0001, 1] (Blinn-Phong)"));
+            return Err(ParamError::new("alpha", a, BLINN_PHONG_ALPHA));
         }
         let exponent = 2.0 / (a * a) - 2.0;
         Ok(Self {

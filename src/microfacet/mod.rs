@@ -29,6 +29,8 @@ mod smith_table;
 mod widths;
 
 pub use beckmann::{Beckmann, BeckmannMasking};
+#[cfg(feature = "serde")]
+pub(crate) use blinn_phong::BLINN_PHONG_ALPHA;
 pub use blinn_phong::BlinnPhongNdf;
 pub use ggx::Ggx;
 pub use gtr::Gtr;

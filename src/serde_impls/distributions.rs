@@ -4,8 +4,9 @@
 //! the constructor on the way in.
 
 use super::{is_default, is_true, refused, renamed, yes};
+use crate::microfacet::BLINN_PHONG_ALPHA;
 use crate::microfacet::{Beckmann, BeckmannMasking, BlinnPhongNdf, Ggx, Gtr};
-use crate::param::Alpha;
+use crate::param::{Alpha, ParamError};
 use core::fmt::{self, Write};
 use serde::de::{self, Deserialize, Deserializer};
 use serde::ser::{Serialize, Serializer};
@@ -142,7 +143,11 @@ fn blinn_phong_ndf<E: de::Error>(
     exponent: Option<f32>,
 ) -> Result<BlinnPhongNdf, E> {
     match (alpha, exponent) {
-        (Some(a), None) => BlinnPhongNdf::new(Alpha::new(a).map_err(refused)?).map_err(refused),
+        // One range for the file's `alpha`, whichever check refuses it: Alpha's own
+        // ([0.0001, 10]) would advertise widths Blinn-Phong refuses.
+        (Some(a), None) => Alpha::new(a)
+            .and_then(BlinnPhongNdf::new)
+            .map_err(|e| refused(ParamError::new("alpha", e.value(), BLINN_PHONG_ALPHA))),
         (None, Some(p)) => BlinnPhongNdf::from_exponent(p).map_err(refused),
         (None, None) => Err(E::missing_field("alpha")),
         (Some(_), Some(_)) => Err(E::custom(

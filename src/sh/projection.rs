@@ -195,11 +195,19 @@ impl Ring {
 #[must_use]
 pub(crate) fn gauss_legendre(n: usize, i: usize) -> (f64, f64) {
     let nf = n as f64;
-    // Roots descend with k = n − 1 − i; the guess needs only f32 accuracy.
+    // Roots descend with k = n − 1 − i; the guess needs only f32 accuracy, but not one that
+    // rounds onto ±1, where P_n′'s formula is 0/0: `cos θ` is formed as `1 − 2 sin²(θ/2)` in
+    // f64 from the angle to the nearer pole (for n ≥ 9,650 the end nodes' f32 cosine was ±1).
     let k = (n - 1 - i) as f64;
-    let mut x = f64::from(crate::math::cos(
-        (core::f64::consts::PI * (k + 0.75) / (nf + 0.5)) as f32,
-    ));
+    let theta = core::f64::consts::PI * (k + 0.75) / (nf + 0.5);
+    let from_pole = theta.min(core::f64::consts::PI - theta);
+    let s = f64::from(crate::math::sin_cos((0.5 * from_pole) as f32).0);
+    let near = 1.0 - 2.0 * s * s;
+    let mut x = if theta <= core::f64::consts::FRAC_PI_2 {
+        near
+    } else {
+        -near
+    };
     let mut dp = 1.0;
     for _ in 0..20 {
         // Bonnet's recurrence for P_n(x), then P_n′ = n (x P_n − P_{n−1}) / (x² − 1).
@@ -287,6 +295,27 @@ mod tests {
         }
         assert!((sw - 2.0).abs() < 1e-13, "{sw}");
         assert!((sx - 2.0 / (2.0 * n as f64 - 1.0)).abs() < 1e-13, "{sx}");
+    }
+
+    #[test]
+    fn gauss_legendre_keeps_its_end_nodes_inside_for_large_rules() {
+        // For n ≥ 9,650 the end nodes' f32 guess rounded onto ±1 and Newton's step was 0/0:
+        // NaN nodes and weights. Every node inside (−1, 1), ascending, with the weights summing
+        // to 2 and the rule integrating x² (2/3) and x¹⁰ (2/11).
+        for n in [9_650, 12_000] {
+            let (mut sw, mut s2, mut s10, mut last) = (0.0, 0.0, 0.0, -1.0);
+            for i in 0..n {
+                let (x, w) = gauss_legendre(n, i);
+                assert!(x > last && x < 1.0 && w > 0.0, "n = {n}, i = {i}: {x}, {w}");
+                last = x;
+                sw += w;
+                s2 += w * x * x;
+                s10 += w * x.powi(10);
+            }
+            assert!((sw - 2.0).abs() < 1e-10, "n = {n}: {sw}");
+            assert!((s2 - 2.0 / 3.0).abs() < 1e-10, "n = {n}: {s2}");
+            assert!((s10 - 2.0 / 11.0).abs() < 1e-10, "n = {n}: {s10}");
+        }
     }
 
     #[test]

@@ -841,7 +841,8 @@ pub fn sampling_chi2<B: Bxdf + ?Sized>(bxdf: &B, config: &Config) -> LawReport {
             ..Chi2Config::default()
         };
         let r = chi2_bxdf(bxdf, wo, &chi);
-        if r.p_value < min_p.0 {
+        // A NaN (no degrees of freedom: a failed check) is reported, not hidden behind 1.
+        if r.p_value < min_p.0 || r.p_value.is_nan() {
             min_p = (r.p_value, wo);
         }
         if !r.passed() && failure.is_none() {

@@ -217,7 +217,8 @@ pub fn check_ndf<D: NormalDistribution + ?Sized>(name: &str, dist: &D, config: &
             config.stretch,
             &chi,
         );
-        if r.p_value < min_p.0 {
+        // A NaN (no degrees of freedom: a failed check) is reported, not hidden behind 1.
+        if r.p_value < min_p.0 || r.p_value.is_nan() {
             min_p = (r.p_value, t);
         }
         if !r.passed() && failure.is_none() {
