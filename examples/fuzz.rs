@@ -6,11 +6,14 @@
 //!
 //! The argument is the number of random inputs per configuration (default 100,000); each
 //! configuration also runs a fixed grid of corner inputs first. A configuration is one model
-//! with one set of parameters: every model and combinator, every distribution and masking term for the
+//! with one set of parameters: every model and combinator (the energy-compensated ones on
+//! their own and as coats, and `Mono`), every distribution and masking term for the
 //! microfacet ones, both transport modes for the dielectrics, `f32` and RGB where the model
 //! is generic over its spectrum, with widths at both ends of their range (`α` = 1e-4 and 10,
-//! anisotropic 1e-4 × 10), relative indices `η` = 1, 1 ± 1e-4, 1e±3, 1.5, 1/1.5, and complex
-//! indices with `κ` up to 50.
+//! anisotropic 1e-4 × 10; 1 for the compensated models' tables), relative indices `η` = 1,
+//! 1 ± 1e-4, 1e±3, 1.5, 1/1.5, and complex indices with `κ` up to 1,000 and `η` down to the
+//! smallest normal `f32` (the ends of `ComplexIor`'s range). Four-wavelength (`Vec4`) spectra
+//! are not fuzzed: the models' code is generic over the carrier, and `f32` and RGB run it.
 //!
 //! The inputs: cosines `0, ±1e-7, ±1e-20, ±1` and uniform on the sphere; azimuths random or
 //! exactly on an axis; `wi = wo`, `wi = −wo`, the mirror pair `(−wo.x, −wo.y, wo.z)`, the
@@ -22,7 +25,8 @@
 //! * **NaN**, **inf**, **neg**: results (a value's channel, a density, a sample's direction,
 //!   value or pdf) that are NaN, infinite, or negative;
 //! * **non-unit**: samples whose `||wi| − 1|` exceeds 1e-3;
-//! * **bad sample**: samples with `pdf ≤ 0` (or not finite), a non-finite weight
+//! * **bad sample**: samples with a `pdf` that is not a positive normal finite number (a
+//!   subnormal one included: the models refuse them), a non-finite weight
 //!   `f |cos θi| / pdf`, or a crossed index `eta` that is not positive and finite;
 //! * **split**: `eval_pdf_prepared` differing from `(eval_prepared, pdf_prepared)` in any bit
 //!   (the models share work between the two, and a renderer's MIS relies on the two paths
@@ -42,7 +46,10 @@ use lobe::bxdf::{
     Lambert, Microfacet, Mirror, OrenNayar, Phong, Plastic, Prepare, RoughDielectric,
     SmoothDielectric, ThinDielectric, TransportMode,
 };
-use lobe::bxdf::{CoatedDiffuse, DiffuseTransmission, Layered, Mix, Sheen, TwoSided};
+use lobe::bxdf::{
+    CoatedDiffuse, CompensatedMicrofacet, Compensation, DiffuseTransmission, Layered, Mix, Mono,
+    Sheen, TwoSided,
+};
 use lobe::fresnel::{Conductor, Dielectric, Fresnel, NoFresnel, Schlick};
 use lobe::microfacet::{
     Beckmann, BeckmannMasking, BlinnPhongNdf, Ggx, Gtr, Masking, NormalDistribution,
@@ -377,8 +384,13 @@ impl Tally {
         }
         let w = s.weight();
         let weight_finite = (0..S::CHANNELS).all(|c| w.channel(c).is_finite());
-        let valid =
-            s.pdf > 0.0 && s.pdf.is_finite() && weight_finite && s.eta > 0.0 && s.eta.is_finite();
+        // A subnormal density is refused by the crate's models (its weight can overflow, or
+        // carry 30 orders of magnitude of a value that is not there): it counts as bad.
+        let valid = s.pdf >= f32::MIN_POSITIVE
+            && s.pdf.is_finite()
+            && weight_finite
+            && s.eta > 0.0
+            && s.eta.is_finite();
         if !valid {
             self.fail(Kind::BadSample, call, input, &s);
         }
@@ -582,11 +594,31 @@ where
         masking,
         Schlick::new(0.04f32).unwrap(),
     );
-    for e in [1.0 + 1e-4, 1e-3, 1e3] {
+    for e in [1.0, 1.0 + 1e-4, 1.0 - 1e-4, 1e-3, 1e3] {
         let f = Dielectric { eta: eta(e) };
         one(c, row, p(&format!("dielectric η {e:e}")), d, masking, f);
     }
     one(c, row, p("no Fresnel"), d, masking, NoFresnel::<f32>::new());
+    one(
+        c,
+        row,
+        p("η (1.2e-38, 1, 1e3) κ (1e3, 0, 1e3) RGB"),
+        d,
+        masking,
+        outermost_conductor(),
+    );
+}
+
+/// The complex index at the ends of `ComplexIor`'s range: `η` from the smallest normal
+/// `f32` to 1,000, `κ` to 1,000.
+fn outermost_conductor() -> Conductor<Vec3> {
+    Conductor {
+        ior: ComplexIor::new(
+            Vec3::new(f32::MIN_POSITIVE, 1.0, 1e3),
+            Vec3::new(1e3, 0.0, 1e3),
+        )
+        .expect("a valid complex index"),
+    }
 }
 
 /// A microfacet model with distribution `d` and every masking term, with the gold conductor
@@ -917,8 +949,85 @@ fn configs() -> Vec<Config> {
             BlinnPhongNdf::new(alpha(a)).unwrap(),
         );
     }
+    push_compensated(&mut c);
     push_compositions(&mut c);
     c.0
+}
+
+/// The energy-compensated models on their own (the tables' widths run to 1), both
+/// compensations, and the monochrome models as RGB (`Mono`, as a renderer's glass).
+fn push_compensated(c: &mut Configs) {
+    let gold = Conductor {
+        ior: lobe::metals::GOLD.rgb(),
+    };
+    for (ax, ay) in [(1e-4, 1e-4), (1.0, 1.0), (1e-4, 1.0), (0.3, 0.3)] {
+        let w = format!("α ({ax:e}, {ay:e})");
+        let ggx = Ggx::new(alpha(ax), alpha(ay));
+        for compensation in [Compensation::KullaConty, Compensation::Turquin] {
+            for (what, f) in [
+                ("gold", gold),
+                ("η (1e-3, 1, 1e3) κ (50, 0, 50)", extreme_conductor()),
+                ("η (1.2e-38, 1, 1e3) κ (1e3, 0, 1e3)", outermost_conductor()),
+            ] {
+                let inner = Microfacet::new(ggx, Masking::HeightCorrelated, f);
+                c.push(
+                    "CompensatedMicrofacet<Ggx>",
+                    format!("{w}, {compensation:?}, {what} RGB"),
+                    None,
+                    CompensatedMicrofacet::new(inner, compensation).unwrap(),
+                );
+            }
+        }
+        let beckmann = Microfacet::new(
+            Beckmann::new(alpha(ax), alpha(ay)),
+            Masking::HeightCorrelated,
+            Schlick::new(0.04f32).unwrap(),
+        );
+        c.push(
+            "CompensatedMicrofacet<Beckmann>",
+            format!("{w}, Schlick 0.04 f32"),
+            None,
+            beckmann.with_energy_compensation().unwrap(),
+        );
+        for e in [1.01, 1.5, 3.0, 1.0 / 3.0, 1.0 / 1.01] {
+            for mode in MODES {
+                let m = RoughDielectric::new(ggx, eta(e))
+                    .with_mode(mode)
+                    .with_energy_compensation()
+                    .unwrap();
+                c.push(
+                    "CompensatedDielectric<Ggx>",
+                    format!("{w}, η {e:e}, {mode:?}"),
+                    Some(eta(e)),
+                    m,
+                );
+            }
+            // A compensated plastic's coat is seen from outside: η ∈ [1.01, 3].
+            for r in [0.0f32, 1.0].into_iter().filter(|_| e > 1.0) {
+                c.push(
+                    "Plastic::compensated<Ggx>",
+                    format!("{w}, η {e:e}, ρ {r} f32"),
+                    Some(eta(e)),
+                    Plastic::compensated(r, ggx, eta(e)).unwrap(),
+                );
+            }
+        }
+    }
+    for e in ETAS {
+        let rough = RoughDielectric::new(Ggx::isotropic(alpha(0.15)), eta(e));
+        c.push(
+            "Mono (RGB)",
+            format!("RoughDielectric GGX α 0.15, η {e:e}"),
+            Some(eta(e)),
+            Mono::<_, Vec3>::new(rough),
+        );
+        c.push(
+            "Mono (RGB)",
+            format!("SmoothDielectric η {e:e}"),
+            Some(eta(e)),
+            Mono::<_, Vec3>::new(SmoothDielectric::new(eta(e))),
+        );
+    }
 }
 
 /// The combinators and the layered models (issue 12): widths and indices at their ends, the
@@ -1102,16 +1211,16 @@ fn main() {
             std::process::exit(2)
         }),
     };
+    // Building the models is not fuzzed: a panic there is reported as usual.
+    let start = Instant::now();
+    let configs = configs();
+    let built = start.elapsed();
     // Panics are expected and counted: keep their messages for the report, not stderr.
     std::panic::set_hook(Box::new(|info| {
         // "panicked at file:line:column:\nmessage"
         let message = info.to_string().replace('\n', " ");
         PANIC.with(|p| *p.borrow_mut() = message);
     }));
-
-    let start = Instant::now();
-    let configs = configs();
-    let built = start.elapsed();
     let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
     let next = AtomicUsize::new(0);
     let results: Vec<Mutex<Option<Tally>>> = configs.iter().map(|_| Mutex::new(None)).collect();

@@ -376,7 +376,7 @@ scalar_conversions!(Alpha "width", Roughness "roughness", Ior "index", Eta "inde
 /// A conductor's complex index of refraction `η + iκ`, relative to the outside medium,
 /// per channel of the spectrum `S`.
 ///
-/// Valid ranges: `η ∈ [1.2e-38, 1000]` (positive and normal: `f32::MIN_POSITIVE` up), `κ ∈ [0, 1000]`,
+/// Valid ranges: `η ∈ [1.1754944e-38, 1000]` (positive and normal: `f32::MIN_POSITIVE` up), `κ ∈ [0, 1000]`,
 /// every channel.
 ///
 /// ```
@@ -428,10 +428,10 @@ impl<S: Spectrum> ComplexIor<S> {
     /// A complex index with real part `eta` and extinction coefficient `k`.
     ///
     /// # Errors
-    /// [`ParamError`] naming `eta` (range `[1.2e-38, 1000]`, positive and normal) or `k` (range `[0, 1000]`) for the
+    /// [`ParamError`] naming `eta` (range `[1.1754944e-38, 1000]`, positive and normal) or `k` (range `[0, 1000]`) for the
     /// first channel that is NaN, infinite or out of range.
     pub fn new(eta: S, k: S) -> Result<Self, ParamError> {
-        let eta = check_spectrum("eta", eta, f32::MIN_POSITIVE, 1e3, "[1.2e-38, 1000]")?;
+        let eta = check_spectrum("eta", eta, f32::MIN_POSITIVE, 1e3, "[1.1754944e-38, 1000]")?;
         let k = check_spectrum("k", k, 0.0, 1e3, "[0, 1000]")?;
         Ok(Self { eta, k })
     }
@@ -466,7 +466,13 @@ impl<S: Spectrum> ComplexIor<S> {
 const fn check_channels(eta: &[f32], k: &[f32]) -> Result<(), ParamError> {
     let mut i = 0;
     while i < eta.len() {
-        if let Err(e) = check("eta", eta[i], f32::MIN_POSITIVE, 1e3, "[1.2e-38, 1000]") {
+        if let Err(e) = check(
+            "eta",
+            eta[i],
+            f32::MIN_POSITIVE,
+            1e3,
+            "[1.1754944e-38, 1000]",
+        ) {
             return Err(e);
         }
         i += 1;
@@ -528,6 +534,20 @@ mod tests {
 
     const BAD: [f32; 4] = [f32::NAN, f32::INFINITY, f32::NEG_INFINITY, -1.0];
 
+    /// `ComplexIor`'s `eta` range names the bound it checks: its lower end parses back to
+    /// `f32::MIN_POSITIVE`, which is accepted, and the subnormal below it is refused (the range
+    /// said 1.2e-38, above values it accepted).
+    #[test]
+    fn complex_ior_names_the_bound_it_checks() {
+        let e = ComplexIor::new(0.0_f32, 0.0).unwrap_err();
+        let lower: f32 = e.range()[1..].split(',').next().unwrap().parse().unwrap();
+        assert_eq!(lower, f32::MIN_POSITIVE);
+        assert!(ComplexIor::new(f32::MIN_POSITIVE, 0.0).is_ok());
+        assert!(ComplexIor::new(1.18e-38_f32, 0.0).is_ok());
+        let below = f32::from_bits(f32::MIN_POSITIVE.to_bits() - 1);
+        assert!(ComplexIor::new(below, 0.0).is_err());
+    }
+
     #[test]
     fn refuses_nan_infinite_negative_and_zero() {
         for v in BAD.into_iter().chain([0.0]) {
@@ -535,7 +555,7 @@ mod tests {
             assert_eq!(Eta::new(v).unwrap_err().param(), "eta");
             assert_eq!(Ior::new(v).unwrap_err().param(), "ior");
             let e = ComplexIor::new(v, 1.0).unwrap_err();
-            assert_eq!((e.param(), e.range()), ("eta", "[1.2e-38, 1000]"));
+            assert_eq!((e.param(), e.range()), ("eta", "[1.1754944e-38, 1000]"));
         }
         for v in BAD {
             assert_eq!(Roughness::new(v).unwrap_err().param(), "roughness");
@@ -555,7 +575,7 @@ mod tests {
         assert!(e.value().is_nan());
         assert_eq!(
             e.to_string(),
-            "invalid eta = NaN: expected a value in [1.2e-38, 1000]"
+            "invalid eta = NaN: expected a value in [1.1754944e-38, 1000]"
         );
     }
 

@@ -259,7 +259,20 @@ pub fn uniform_sphere_inverse(w: Vec3) -> Vec2 {
 #[inline(always)]
 #[must_use]
 pub fn uniform_cone(u: Vec2, cos_theta_max: f32) -> Vec3 {
-    let one_minus_cos = u.x * (1.0 - cos_theta_max);
+    uniform_cone_of_width(u, 1.0 - cos_theta_max)
+}
+
+/// [`uniform_cone`] for the cone given by its width `w = 1 − cos θ_max`, which a narrow cone
+/// keeps to full precision where `cos θ_max` rounds toward 1: a sphere of radius `r` seen from
+/// distance `d` subtends `w = s / (1 + √(1 − s))` with `s = r²/d²` (below `r/d ≈ 1.7e-4`, the
+/// `f32` cosine is exactly 1 and the cone would be lost).
+///
+/// `cos θ = 1 − u.x w`, `sin θ = √(u.x w (2 − u.x w))`, `φ = 2π u.y`. Precondition:
+/// `u ∈ [0, 1]²` and `w ∈ [0, 2]`.
+#[inline(always)]
+#[must_use]
+pub fn uniform_cone_of_width(u: Vec2, width: f32) -> Vec3 {
+    let one_minus_cos = u.x * width;
     let cos_theta = 1.0 - one_minus_cos;
     let sin_theta = safe_sqrt(one_minus_cos * (2.0 - one_minus_cos));
     let (s, c) = sin_cos_turns(u.y);
@@ -275,7 +288,15 @@ pub fn uniform_cone(u: Vec2, cos_theta_max: f32) -> Vec3 {
 #[inline(always)]
 #[must_use]
 pub fn uniform_cone_pdf(cos_theta_max: f32) -> f32 {
-    INV_2PI / (1.0 - cos_theta_max)
+    uniform_cone_pdf_of_width(1.0 - cos_theta_max)
+}
+
+/// The density of [`uniform_cone_of_width`] inside the cone, `1 / (2π w)`; `+∞` for `w = 0`.
+/// Precondition: `w ∈ [0, 2]`.
+#[inline(always)]
+#[must_use]
+pub fn uniform_cone_pdf_of_width(width: f32) -> f32 {
+    INV_2PI / width
 }
 
 /// The inverse of [`uniform_cone`]: `((1 − cos θ) / (1 − cos θ_max), φ / 2π)`.

@@ -9,8 +9,8 @@
 
 use lobe::sampling::{
     cosine_hemisphere, cosine_hemisphere_pdf, square_to_disk_concentric, uniform_cone,
-    uniform_cone_pdf, uniform_hemisphere, uniform_hemisphere_pdf, uniform_sphere,
-    uniform_sphere_pdf,
+    uniform_cone_of_width, uniform_cone_pdf, uniform_cone_pdf_of_width, uniform_hemisphere,
+    uniform_hemisphere_pdf, uniform_sphere, uniform_sphere_pdf,
 };
 use lobe::verify::{Chi2Bin, Chi2Config, Chi2Report, chi2_sphere, sidak};
 use lobe::{Vec2, Vec3};
@@ -120,6 +120,42 @@ fn concentric_disk_is_uniform() {
     };
     let report = chi2_sphere(lift, uniform_upper, &config(14));
     assert_passes("concentric disk (equal-area lift)", &report);
+}
+
+/// A cone given by its width `w = 1 − cos θmax` keeps its angle where `cos θmax` would round
+/// to 1 (below `w ≈ 6e-8`): the samples' `sin² θ` is `u w (2 − u w)` to round-off, every
+/// sample inside the cone, and the density integrates to 1 over its solid angle `2π w`; for
+/// a cone `f32` can hold either way, both forms give the same bits.
+#[test]
+fn a_narrow_cone_by_its_width_keeps_its_angle() {
+    for w in [1e-12_f32, 1e-9, 3e-8, 1e-4] {
+        for ux in [0.0_f32, 0.25, 0.5, 1.0] {
+            let d = uniform_cone_of_width(Vec2::new(ux, 0.3), w);
+            let sin2 = f64::from(d.x).powi(2) + f64::from(d.y).powi(2);
+            let want = f64::from(ux) * f64::from(w) * (2.0 - f64::from(ux) * f64::from(w));
+            assert!(
+                (sin2 - want).abs() <= 1e-6 * want,
+                "w {w}, u {ux}: sin² θ {sin2} vs {want}"
+            );
+            assert!((d.length() - 1.0).abs() < 1e-6, "{d:?}");
+        }
+        let mass =
+            f64::from(uniform_cone_pdf_of_width(w)) * 2.0 * std::f64::consts::PI * f64::from(w);
+        assert!((mass - 1.0).abs() < 1e-6, "w {w}: {mass}");
+    }
+    for cos_max in [0.95_f32, 0.5, -0.3] {
+        let u = Vec2::new(0.7, 0.2);
+        assert_eq!(
+            uniform_cone(u, cos_max).to_array().map(f32::to_bits),
+            uniform_cone_of_width(u, 1.0 - cos_max)
+                .to_array()
+                .map(f32::to_bits)
+        );
+        assert_eq!(
+            uniform_cone_pdf(cos_max).to_bits(),
+            uniform_cone_pdf_of_width(1.0 - cos_max).to_bits()
+        );
+    }
 }
 
 #[test]

@@ -119,6 +119,28 @@ fn sphere_light_gives_pi_l_sin2() {
     assert_irradiance("sphere", &scene, PI * l * (r / d).powi(2));
 }
 
+/// Small, distant spheres keep their irradiance: the same `E` as
+/// [`sphere_light_gives_pi_l_sin2`] from spheres 1e-3 and 1.5e-4 of their distance in radius
+/// (brighter by the ratio of solid angles). With the cone's `1 − cos θmax` taken from the
+/// `f32` cosine, the first rendered 0.9% too bright (16 σ) and the second black.
+#[test]
+fn a_small_distant_sphere_light_keeps_its_irradiance() {
+    let d = 2.0_f64;
+    for r_over_d in [1e-3_f64, 1.5e-4] {
+        let r = r_over_d * d;
+        let l = 3.0 * (0.5 / r).powi(2);
+        let scene = floor_scene(|b| {
+            b.sphere_light(
+                Vec3::new(0.0, d as f32, 0.0),
+                r as f32,
+                Vec3::splat(l as f32),
+            )
+        });
+        let name = format!("sphere r/d = {r_over_d:e}");
+        assert_irradiance(&name, &scene, PI * l * r_over_d * r_over_d);
+    }
+}
+
 #[test]
 fn quad_light_gives_the_rectangle_form_factor() {
     // A square of side 2a centred at height c above the point, facing down: four
@@ -154,4 +176,54 @@ fn sky_gives_its_cosine_weighted_integral() {
     });
     let (z, h) = (f64::from(z), f64::from(h));
     assert_irradiance("sky", &scene, 2.0 * PI * (h / 2.0 + 2.0 * (z - h) / 5.0));
+}
+
+/// The Whitted integrator traces rough glass as smooth glass (its docs): a point light at
+/// the mirror direction of the view shows no highlight, since a mirror ray cannot meet a
+/// point light. (It added rough glass's glossy value for each light as well: 0.149 here.)
+#[test]
+fn whitted_traces_rough_glass_as_smooth_glass() {
+    use crate::whitted::Whitted;
+    use lobe::bxdf::{Mono, RoughDielectric};
+    use lobe::microfacet::Ggx;
+    use lobe::{Alpha, Eta};
+    let glass = Eta::new(1.5).unwrap();
+    let rough = Mono::<_, Vec3>::new(RoughDielectric::new(
+        Ggx::isotropic(Alpha::new(0.15).unwrap()),
+        glass,
+    ));
+    let mut b = SceneBuilder::new();
+    let floor = b.material(
+        Material::new("rough glass", rough)
+            .with_interface(crate::material::Interface::Dielectric(glass)),
+    );
+    let quad = Quad::new(
+        Vec3::new(-50.0, 0.0, 50.0),
+        Vec3::new(100.0, 0.0, 0.0),
+        Vec3::new(0.0, 0.0, -100.0),
+        floor,
+    );
+    b.surface(quad.unwrap());
+    b.light(Light::Point {
+        position: Vec3::new(0.0, 3.0, -4.0),
+        intensity: Vec3::splat(10.0),
+    });
+    let camera = Camera::look_at(Vec3::new(0.0, 3.0, 4.0), Vec3::ZERO, Vec3::Y, 0.02, 1.0);
+    let scene = b.build(camera);
+    let integrator = Integrator::Whitted(Whitted {
+        max_depth: 4,
+        filter: None,
+        irradiance: false,
+    });
+    let s = RenderSettings {
+        width: 1,
+        height: 1,
+        spp: 16,
+        seed: 3,
+    };
+    let mut rng = rng_for(&s, 0, 0);
+    for _ in 0..16 {
+        let l = sample_pixel(&scene, &integrator, &s, 0, 0, &mut rng);
+        assert_eq!(l, Vec3::ZERO, "a highlight of the point light: {l}");
+    }
 }

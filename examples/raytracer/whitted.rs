@@ -85,7 +85,13 @@ impl Whitted {
             }
             _ => scene.ambient * sp.material.ambient,
         };
-        for light in &scene.lights {
+        // Glass is traced as smooth glass: its interface's rays carry all its light, and the
+        // model's own value (rough glass's glossy lobe) would show each light a second time.
+        let traced = matches!(
+            sp.material.interface,
+            Interface::Dielectric(_) | Interface::Thin(_)
+        );
+        for light in scene.lights.iter().filter(|_| !traced) {
             if matches!(light, Light::Environment(_)) {
                 continue; // the ambient term stands for it
             }

@@ -52,9 +52,13 @@ const FIT_1: [f32; 5] = [21.5473, 3.82987, 0.19823, -1.97760, -4.32054];
 /// head-on and grows toward grazing — at `θo = 0°, 60°, 80°, 89°`: 0.164, 0.356, 0.614, 0.922
 /// (`r = 1`); 0.087, 0.281, 0.546, 0.856 (`r = 0.5`); 0.002, 0.096, 0.388, 0.847 (`r = 0.1`);
 /// and for smoother sheens it exceeds 1 at grazing (1.18 at 89° for `r = 0.03`, 1.69 for
-/// `r = 0.01`): the fitted `Λ` is not the exact Smith
-/// `Λ` of this `D` (their projected-area identity is off by up to 5%), and the model has no
-/// Fresnel factor to hold it down (the finding Estevez & Kulla's users report). The table
+/// `r = 0.01`). That gain is the fitted `Λ`'s: it is not the exact Smith `Λ` of this `D`.
+/// For `r ≥ 0.1` the projected-area identity `∫ G1 ⟨w, m⟩ D dm = cos θ` holds within 5%
+/// up to 80° (`tests/bxdf_sheen.rs`; right at grazing the fit drifts further, −9.5% at
+/// 89.9° for `r = 1`), but below it the fit overestimates the projected area badly, at 60°
+/// by +12% (`r = 0.06`), +41% (`r = 0.03`) and +120% (`r = 0.01`), so that `G` masks too
+/// little. With the exact `Λ` the albedo stays below 1 at every `r` (0.69 at 89° for
+/// `r = 0.01`, by an `f64` quadrature), Fresnel factor or not. The table
 /// matches Monte Carlo within 1.2% plus the estimate's k standard errors over `θo ≤ 89°` (the
 /// largest gap measured, 0.9%, is at `r = 0.01`, `θo = 89°`, where the estimate's standard
 /// error is 1.8%).
@@ -226,9 +230,13 @@ impl<S: Spectrum> Sheen<S> {
     }
 
     /// The directional albedo `c E(cos θo)` from the table (linear interpolation), for
-    /// layering the sheen over a base (see the type's docs).
+    /// layering the sheen over a base (see the type's docs); zero for a viewer below or on
+    /// the surface (`cos θo ≤ 0`, or NaN), where the sheen reflects nothing.
     #[must_use]
     pub fn albedo(&self, cos_theta: f32) -> S {
+        if !(cos_theta > 0.0) {
+            return S::zero();
+        }
         let x = Self::table_x(cos_theta);
         let i = (x as usize).min(TABLE - 2);
         let t = x - i as f32;
