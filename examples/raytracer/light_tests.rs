@@ -25,11 +25,14 @@ const SAMPLES: u32 = 200_000;
 /// A large Lambert floor at `y = 0` with the lights that `add` puts in, seen through a
 /// one-pixel camera with a 0.02° field of view aimed at the origin from the side.
 fn floor_scene(add: impl FnOnce(&mut SceneBuilder)) -> Scene {
+    let lambert = Material::new("floor", Lambert::new(Vec3::splat(RHO)).unwrap());
+    floor_scene_of(lambert, add)
+}
+
+/// [`floor_scene`] with a floor of `material`.
+fn floor_scene_of(material: Material, add: impl FnOnce(&mut SceneBuilder)) -> Scene {
     let mut b = SceneBuilder::new();
-    let floor = b.material(Material::new(
-        "floor",
-        Lambert::new(Vec3::splat(RHO)).unwrap(),
-    ));
+    let floor = b.material(material);
     let quad = Quad::new(
         Vec3::new(-50.0, 0.0, 50.0),
         Vec3::new(100.0, 0.0, 0.0),
@@ -192,24 +195,14 @@ fn whitted_traces_rough_glass_as_smooth_glass() {
         Ggx::isotropic(Alpha::new(0.15).unwrap()),
         glass,
     ));
-    let mut b = SceneBuilder::new();
-    let floor = b.material(
-        Material::new("rough glass", rough)
-            .with_interface(crate::material::Interface::Dielectric(glass)),
-    );
-    let quad = Quad::new(
-        Vec3::new(-50.0, 0.0, 50.0),
-        Vec3::new(100.0, 0.0, 0.0),
-        Vec3::new(0.0, 0.0, -100.0),
-        floor,
-    );
-    b.surface(quad.unwrap());
-    b.light(Light::Point {
-        position: Vec3::new(0.0, 3.0, -4.0),
-        intensity: Vec3::splat(10.0),
+    let floor = Material::new("rough glass", rough)
+        .with_interface(crate::material::Interface::Dielectric(glass));
+    let scene = floor_scene_of(floor, |b| {
+        b.light(Light::Point {
+            position: Vec3::new(0.0, 3.0, -4.0),
+            intensity: Vec3::splat(10.0),
+        })
     });
-    let camera = Camera::look_at(Vec3::new(0.0, 3.0, 4.0), Vec3::ZERO, Vec3::Y, 0.02, 1.0);
-    let scene = b.build(camera);
     let integrator = Integrator::Whitted(Whitted {
         max_depth: 4,
         filter: None,
