@@ -391,6 +391,17 @@ pub(crate) fn gauss_legendre(a: f32, b: f32, f: impl Fn(f32) -> f32) -> f32 {
     sum * half
 }
 
+/// Stafford's variant 13 of the MurmurHash3 finaliser (as in SplitMix64): a bijection of
+/// `u64` in which every input bit affects every output bit. The seeds of the layered models'
+/// random walks and of `verify`'s estimates are hashed through it.
+#[inline(always)]
+#[must_use]
+pub(crate) fn mix64(mut z: u64) -> u64 {
+    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+    z ^ (z >> 31)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

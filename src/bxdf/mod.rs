@@ -210,7 +210,7 @@ mod sheen;
 mod smooth_dielectric;
 mod thin_dielectric;
 mod two_sided;
-pub(crate) mod walk_rng;
+mod walk_rng;
 
 pub use blinn_phong::{BlinnPhong, BlinnPhongForm};
 pub use coated_conductor::CoatedConductor;

@@ -1,5 +1,6 @@
 //! The small generator inside the stochastic models, seeded from a hash of their arguments.
 
+use crate::math::mix64;
 use crate::sampling::ONE_MINUS_EPSILON;
 use glam::{Vec2, Vec3};
 
@@ -19,15 +20,6 @@ pub(crate) struct WalkRng {
 const MULTIPLIER: u64 = 0x5851_f42d_4c95_7f2d;
 /// PCG32's increment (any odd number; this is the reference implementation's default).
 const INCREMENT: u64 = 0x1405_7b7e_f767_814f;
-
-/// Stafford's variant 13 of the MurmurHash3 finaliser (as in SplitMix64): a bijection of
-/// `u64` in which every input bit affects every output bit.
-#[inline(always)]
-pub(crate) fn mix64(mut z: u64) -> u64 {
-    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-    z ^ (z >> 31)
-}
 
 /// A running hash of words: each word is folded in through [`mix64`].
 #[derive(Clone, Copy, Debug)]

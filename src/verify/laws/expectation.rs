@@ -15,8 +15,9 @@
 //!   *expected* density predicts, each bin's mass estimated by averaging `pdf_seeded` over
 //!   stratified points of the bin (its variance from the differences of neighbouring strata,
 //!   not the points' spread); that variance is added to each term's denominator,
-//!   `Σ (O − E)² / (E + Var Ê)`, so that a noisy density weakens the test but does not fail a
-//!   correct model;
+//!   `Σ (O − E)² / (E + Var Ê)`, so that a noisy density weakens the test rather than fail a
+//!   correct model by its noise (but see **Calibration** below: skewed estimates understate
+//!   their own spread);
 //! * **consistency**: in every bin, the mean of `sample`'s weight `f |cos θi| / pdf` over the
 //!   samples that land there equals `∫_bin E[f] |cos θi| dωi`, estimated by averaging
 //!   `eval_seeded` over stratified points of the bin, within `k` combined standard errors
@@ -53,7 +54,7 @@ use super::config::Config;
 use super::report::{Law, LawReport, Report};
 use crate::Spectrum;
 use crate::bxdf::Bxdf;
-use crate::bxdf::walk_rng::mix64;
+use crate::math::mix64;
 use crate::sampling::uniform_sphere;
 use crate::verify::stats::{Accumulator, Pcg32, chi2_survival, gamma_p, sidak, two_sided_quantile};
 use glam::Vec3;
@@ -264,8 +265,9 @@ fn bin_area() -> f64 {
 }
 
 /// The mean of a bin's stratified points and its variance, from the differences of the points
-/// in pairs of neighbouring strata (strata `2i` and `2i + 1`, neighbours in `cos θ` in
-/// [`bin_point`]'s grid): `Var x̄ ≈ Σ (a − b)² / m²`, since `E[(a − b)²] = Var a + Var b +
+/// in pairs of neighbouring strata (strata `2i` and `2i + 1` of a column of [`bin_point`]'s
+/// grid, neighbours in `cos θ`; with an odd number of rows each column's last stratum is
+/// left unpaired): `Var x̄ ≈ Σ (a − b)² / m²`, since `E[(a − b)²] = Var a + Var b +
 /// (μa − μb)²` for independent points, and neighbouring strata's means differ little. A
 /// stratified estimate's variance is its points' own noise (a stochastic model's estimates),
 /// not the integrand's variation across the bin, which the points' spread would count (the
@@ -277,21 +279,27 @@ struct Stratified {
     /// The sum of the squared differences within pairs.
     diff2: f64,
     n: u64,
+    pairs: u64,
     /// The first point of the pair being filled.
-    first: f64,
+    first: Option<f64>,
 }
 
 impl Stratified {
-    /// Adds the next stratum's point.
-    fn push(&mut self, x: f64) {
-        if self.n.is_multiple_of(2) {
-            self.first = x;
-        } else {
-            let d = x - self.first;
-            self.diff2 += d * d;
-        }
+    /// Adds the next stratum's point: the first or second of a pair, or (`lone`) a stratum
+    /// without a neighbour to pair with.
+    fn push(&mut self, x: f64, lone: bool) {
         self.sum += x;
         self.n += 1;
+        if lone {
+            return;
+        }
+        match self.first.take() {
+            Some(a) => {
+                self.diff2 += (x - a) * (x - a);
+                self.pairs += 1;
+            }
+            None => self.first = Some(x),
+        }
     }
 
     /// The mean of the points (NaN with none).
@@ -303,15 +311,14 @@ impl Stratified {
         }
     }
 
-    /// The variance of [`mean`](Self::mean); 0 without a pair. An unpaired last point counts
-    /// as the pairs' average.
+    /// The variance of [`mean`](Self::mean); 0 without a pair. Unpaired points count as
+    /// the pairs' average.
     fn variance_of_mean(&self) -> f64 {
-        let pairs = self.n / 2;
-        if pairs == 0 {
+        if self.pairs == 0 {
             return 0.0;
         }
         let n = self.n as f64;
-        self.diff2 * (n / (2 * pairs) as f64) / (n * n)
+        self.diff2 * (n / (2 * self.pairs) as f64) / (n * n)
     }
 }
 
@@ -405,16 +412,19 @@ fn measure_direction<B: Bxdf + ?Sized>(
     let mut mass = vec![Stratified::default(); nbins];
     let mut value = vec![vec![Stratified::default(); n]; nbins];
     let mut point = 0_u64;
+    let rows = strata(m).0;
     for b in 0..nbins {
         for j in 0..m {
             let w = bin_point(b, j, m, &mut prng);
             let seed = estimate_seed(config.seed, index, point);
             point += 1;
-            mass[b].push(f64::from(bxdf.pdf_seeded(wo, w, seed)) * area);
+            // An odd column's last stratum has no neighbour in it to pair with.
+            let lone = rows % 2 == 1 && j % rows == rows - 1;
+            mass[b].push(f64::from(bxdf.pdf_seeded(wo, w, seed)) * area, lone);
             let f = bxdf.eval_seeded(wo, w, seed);
             let cos = f64::from(w.z.abs()) * area;
             for (c, v) in value[b].iter_mut().enumerate() {
-                v.push(f64::from(f.channel(c)) * cos);
+                v.push(f64::from(f.channel(c)) * cos, lone);
             }
         }
     }
@@ -439,8 +449,11 @@ fn measure_direction<B: Bxdf + ?Sized>(
     // The samples that drew nothing: one of the chi-square's cells when it expects enough,
     // never pooled with others (merged into a direction bin, 390 failures against none
     // expected passed with p = 0.0044), and always tested alone: the Poisson chance of as
-    // many or more for the expectation raised by k of its own standard errors (k at the same
-    // significance). The direction's significance is shared by the two tests (Šidák).
+    // many or more for the expectation raised by k of its own standard errors. The test's
+    // share of the significance, α, is halved between the raise (k = Φ⁻¹(1 − α/2): the
+    // estimate falls that far below the true expectation with probability α/2) and the
+    // Poisson tail (rejected below α/2), so that a correct model fails it with probability α
+    // at most. The direction's significance is shared with the chi-square (Šidák).
     let expected_missing = total * (1.0 - mass_total).max(0.0);
     if expected_missing >= MIN_EXPECTED {
         cells.push((missing as f64, expected_missing, total * total * mass_var));
@@ -559,25 +572,28 @@ pub fn sampling_and_consistency_in_expectation<B: Bxdf + ?Sized>(
     let mut weight_failure: Vec<Option<String>> = vec![None; n];
     for (i, &wo) in directions.iter().enumerate() {
         let d = measure_direction(bxdf, wo, config, i as u64, chi_significance);
-        let passed = d.zero_hits == 0
-            && d.dof >= 1
-            && d.p_value >= chi_significance
-            && d.missing_p >= chi_significance;
+        let chi_passed = d.zero_hits == 0 && d.dof >= 1 && d.p_value >= chi_significance;
+        // Half the share for the tail, half for the expectation's raise (above).
+        let missing_passed = d.missing_p >= 0.5 * chi_significance;
         if d.p_value < min_p.0 || d.p_value.is_nan() {
             min_p = (d.p_value, wo);
         }
-        if !passed && chi_failure.is_none() {
-            chi_failure = Some(format!(
-                "at wo = {wo:?}: χ² = {:.1} with {} dof, p = {:.3e}, {} samples in bins of zero \
-                 expected density, {} samples drew nothing (expected {:.1}, p = {:.3e})",
-                d.statistic,
-                d.dof,
-                d.p_value,
-                d.zero_hits,
-                d.missing,
-                d.expected_missing,
-                d.missing_p
-            ));
+        if !(chi_passed && missing_passed) && chi_failure.is_none() {
+            let mut why = format!("at wo = {wo:?}:");
+            if !chi_passed {
+                why += &format!(
+                    " χ² = {:.1} with {} dof, p = {:.3e}, {} samples in bins of zero expected \
+                     density;",
+                    d.statistic, d.dof, d.p_value, d.zero_hits
+                );
+            }
+            if !missing_passed {
+                why += &format!(
+                    " too many samples drew nothing: {} (expected {:.1}, p = {:.3e});",
+                    d.missing, d.expected_missing, d.missing_p
+                );
+            }
+            chi_failure = Some(why);
         }
         for (c, &(z, b)) in d.weight_z.iter().enumerate() {
             if z > worst[c].0 || z.is_nan() {

@@ -140,9 +140,9 @@ pub struct Chi2Report {
     /// `P(χ²_dof ≥ statistic)`, [`chi2_survival`](super::chi2_survival); NaN when
     /// `dof = 0`.
     pub p_value: f64,
-    /// The significance level the chi-square was held to: the configuration's, or its Šidák
-    /// share of two when a few samples that returned `None` were tested on their own (see
-    /// [`zero_bin_hits`](Self::zero_bin_hits)).
+    /// The significance level the chi-square was held to: the configuration's Šidák share of
+    /// two, the other share holding the test of the samples that returned `None` on their own
+    /// (see [`zero_bin_hits`](Self::zero_bin_hits)).
     pub significance: f64,
     /// Samples drawn, `N`.
     pub samples: usize,
@@ -159,10 +159,10 @@ pub struct Chi2Report {
     /// Samples that were not finite or not of unit length (`|‖w‖ − 1| > 10⁻³`): an outright
     /// failure.
     pub invalid_samples: usize,
-    /// Samples in bins over which the density integrates to zero, and samples that returned
-    /// `None` where the density leaves almost none to fail (fewer than the pooling threshold
-    /// expected) more often than a Poisson count admits: an outright failure (the sampler
-    /// produces directions, or failures, its pdf says are impossible).
+    /// Samples in bins over which the density integrates to zero, and the samples that
+    /// returned `None` when there are more of them than a Poisson count of their expectation
+    /// admits (at any expectation): an outright failure (the sampler produces directions, or
+    /// failures, its pdf says are impossible or improbable).
     pub zero_bin_hits: usize,
     /// Density evaluations that were negative, infinite or NaN (counted as zero in the
     /// integral): an outright failure.
@@ -205,7 +205,8 @@ impl fmt::Display for Chi2Report {
         )?;
         write!(
             f,
-            "  {} samples: {} rejected (expected {:.1}), {} invalid, {} in zero-pdf bins; \
+            "  {} samples: {} rejected (expected {:.1}), {} invalid, {} in zero-pdf bins or \
+             rejected beyond the expectation; \
              {} invalid pdf values; {} low-count bins pooled; integral of pdf {:.6} \
              (quadrature error ~{:.0e})",
             self.samples,
@@ -255,8 +256,9 @@ impl fmt::Display for Chi2Report {
 /// * **Pooling.** Bins expecting fewer than `min_expected` samples are summed into one
 ///   pooled bin. If that pool still expects fewer than `min_expected`, it is merged into
 ///   the regular bin with the smallest expectation (or, if there is none, kept as it is).
-///   The no-sample bin takes part like any other bin; it is left out when it neither
-///   expects nor receives anything.
+///   The no-sample bin is never pooled: it is one of the bins when it expects at least
+///   `min_expected`, and left out of the statistic otherwise (its count is tested alone in
+///   any case, above).
 /// * **Outright failures.** A non-finite or non-unit sample, a sample in a bin where the
 ///   density integrates to zero, and a negative or non-finite density value each fail the
 ///   test whatever the statistic; they are counted in the report.

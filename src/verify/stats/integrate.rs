@@ -249,7 +249,8 @@ pub fn integrate_hemisphere(
     }
     Estimate {
         mean: if samples == 0 { f64::NAN } else { mean },
-        std_err: var.sqrt(),
+        // Fewer than two draws of a component: no spread to show (NaN, as documented).
+        std_err: if samples < 6 { f64::NAN } else { var.sqrt() },
         n: samples as u64,
     }
 }
