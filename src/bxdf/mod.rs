@@ -514,6 +514,12 @@ pub trait Bxdf {
     /// and share the expectation `f(wo, wi)` (the crate's models: `eval(wo, wi)` is
     /// `eval_seeded(wo, wi, 0)`). The default, for an exact model, ignores the seed and
     /// returns `eval(wo, wi)`.
+    ///
+    /// Independent means it: hash the seed and the arguments together into the generator's
+    /// *seed* (the crate's models fold them through a 64-bit mixer). A PCG generator whose
+    /// *stream* was taken from the direction's bits gave estimates at neighbouring directions
+    /// that were not independent, and `verify`'s in-expectation checks judged a correct model
+    /// on that correlated noise: its p-values crowded toward 0 (`tests/verify_power.rs`).
     #[inline(always)]
     #[must_use]
     fn eval_seeded(&self, wo: Vec3, wi: Vec3, seed: u64) -> Self::Spectrum {
