@@ -52,6 +52,7 @@ fn rendered(scene: &Scene) -> Estimate {
         filter: None,
         irradiance: false,
         clamp: None,
+        roulette: true,
     });
     let s = RenderSettings {
         width: 1,

@@ -127,6 +127,7 @@ fn run(o: &Options) -> Result<(), String> {
             filter,
             irradiance: o.irradiance,
             clamp: o.clamp,
+            roulette: true,
         }),
         IntegratorChoice::Whitted => Integrator::Whitted(Whitted {
             max_depth: o.max_depth,

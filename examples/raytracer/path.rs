@@ -51,6 +51,9 @@ pub struct PathTracer {
     pub irradiance: bool,
     /// Clamp each contribution of indirect light to this (biased); `None`: off.
     pub clamp: Option<f32>,
+    /// Russian roulette after [`ROULETTE_DEPTH`] bounces (on in every render; off only to test
+    /// that it is unbiased, `furnace_tests`).
+    pub roulette: bool,
 }
 
 /// What the previous vertex's BSDF sample needs to say for MIS at the next hit.
@@ -191,7 +194,7 @@ impl PathTracer {
             ray = Ray::new(offset_origin(sp.p, sp.ng, wi), wi);
             depth += 1;
 
-            if depth >= ROULETTE_DEPTH {
+            if self.roulette && depth >= ROULETTE_DEPTH {
                 let survive = (beta * eta_scale).max_element().min(1.0);
                 if !(rng.next_f32() < survive) {
                     break;
@@ -279,6 +282,7 @@ mod tests {
             filter: filter.map(|f| PathFilter::parse(f).unwrap()),
             irradiance: false,
             clamp,
+            roulette: true,
         });
         let settings = RenderSettings {
             width: 32,

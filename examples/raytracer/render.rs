@@ -148,6 +148,7 @@ mod tests {
             filter: None,
             irradiance: false,
             clamp: None,
+            roulette: true,
         });
         let settings = RenderSettings {
             width: 32,

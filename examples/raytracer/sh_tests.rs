@@ -133,6 +133,7 @@ fn path(irradiance: bool) -> Integrator {
         filter: None,
         irradiance,
         clamp: None,
+        roulette: true,
     })
 }
 

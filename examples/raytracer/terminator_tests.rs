@@ -178,6 +178,7 @@ fn direct_light(scene: &Scene, pixels: &[(u32, u32)]) -> Vec<Option<f64>> {
         filter: None,
         irradiance: false,
         clamp: None,
+        roulette: true,
     });
     let settings = RenderSettings {
         width: W,
