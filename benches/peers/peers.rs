@@ -30,7 +30,7 @@ use interleave::{Kernel, ratio, rounds, spread};
 use lanes::PerLane;
 use lobe::batch::{Batch, Lanes, SampleOut, Vec2s, Vec3s, Vec3sMut};
 use lobe::bxdf::{Bxdf, Lambert, Lobes, Microfacet, Plastic, Prepare, RoughDielectric};
-use lobe::fresnel::{Conductor as ExactConductor, Schlick};
+use lobe::fresnel::{Conductor as ExactConductor, Fresnel, Schlick};
 use lobe::microfacet::{Ggx, Masking};
 use lobe::{Alpha, Eta, Vec3};
 use std::hint::black_box;
@@ -41,6 +41,38 @@ const F0: [f32; 3] = [1.0, 0.78, 0.34];
 const ALPHA: f32 = 0.3;
 
 type Conductor = Microfacet<Ggx, Schlick<Vec3>>;
+
+/// The `bsdf` crate's conductor Fresnel term, for lobe to compute the peer's own model: the
+/// exact dielectric reflectance `F` at its `ior` (1.5), blended toward white,
+/// `c (1 − F) + F` (its `fresnel_colored`; not Schlick's, and 0.04 + 0.96 c head-on).
+#[derive(Clone, Copy)]
+struct PeerFresnel {
+    color: Vec3,
+    eta: Eta,
+}
+
+impl Fresnel for PeerFresnel {
+    type Spectrum = Vec3;
+    #[inline]
+    fn eval(&self, cos_d: f32) -> Vec3 {
+        let f = lobe::fresnel::dielectric(cos_d, self.eta);
+        self.color * (1.0 - f) + Vec3::splat(f)
+    }
+}
+
+/// The `bsdf` crate's GGX conductor as lobe computes it: its Fresnel term, separable Smith
+/// masking `G1(wo) G1(wi)`, and Heitz's visible normals without the bounded cap (lobe's
+/// default GGX draws from Eto & Tokuyoshi's bounded sampler, another density).
+fn lobe_as_peer_conductor() -> Microfacet<Ggx, PeerFresnel> {
+    Microfacet::new(
+        Ggx::isotropic(Alpha::new(ALPHA).unwrap()).with_bounded_reflection(false),
+        Masking::Separable,
+        PeerFresnel {
+            color: Vec3::from(F0),
+            eta: Eta::new(1.5).unwrap(),
+        },
+    )
+}
 
 fn lobe_conductor() -> Conductor {
     Microfacet::new(
@@ -275,6 +307,37 @@ fn peer_kernels<'a, B: BSDF>(name: &str, m: &'a B, i: &'a Inputs64) -> [Kernel<'
     ]
 }
 
+/// Asserts that lobe's `m` computes the peer's `peer` on the inputs: `eval` and `pdf` within
+/// 1e-4 relative (`f32` against `f64`) wherever the peer's value is above 1e-3 of its largest,
+/// and printing the largest differences.
+fn same_model<B: Bxdf<Spectrum = Vec3>, P: BSDF>(m: &B, peer: &P, i: &Inputs, i64: &Inputs64) {
+    let (mut worst_f, mut worst_p, mut fmax, mut pmax) = (0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64);
+    let values: Vec<_> = (0..N)
+        .map(|k| {
+            let f = peer.evaluate(i64.wo[k], i64.wi[k]);
+            let p = peer.sample_incoming_pdf(i64.wo[k], i64.wi[k]);
+            ([f.x, f.y, f.z], p)
+        })
+        .collect();
+    for (f, p) in &values {
+        fmax = f.iter().copied().fold(fmax, f64::max);
+        pmax = pmax.max(*p);
+    }
+    for (k, (f, p)) in values.iter().enumerate() {
+        let (ours, our_pdf) = (m.eval(i.wo[k], i.wi[k]), m.pdf(i.wo[k], i.wi[k]));
+        for c in 0..3 {
+            if f[c] > 1e-3 * fmax {
+                worst_f = worst_f.max((f64::from(ours[c]) - f[c]).abs() / f[c]);
+            }
+        }
+        if *p > 1e-3 * pmax {
+            worst_p = worst_p.max((f64::from(our_pdf) - p).abs() / p);
+        }
+    }
+    println!("the peer's model in lobe: eval within {worst_f:.1e}, pdf within {worst_p:.1e}");
+    assert!(worst_f < 1e-4 && worst_p < 1e-4, "not the same model");
+}
+
 fn main() {
     let inputs = inputs();
     let inputs64 = to_f64(&inputs);
@@ -295,6 +358,17 @@ fn main() {
         &inputs64,
     );
     for ((a, b), c) in lobe_c.into_iter().zip(batch_c).zip(peer_c) {
+        triples.push([a, b, c]);
+    }
+    // The peer's own model on both sides (its Fresnel, separable masking, unbounded VNDF),
+    // checked to be the same function before it is timed.
+    let as_peer = lobe_as_peer_conductor();
+    same_model(&as_peer, &peer_conductor, &inputs, &inputs64);
+    let name = "GGX conductor, the peer's model on both sides";
+    let lobe_p = lobe_kernels(&format!("{name}: lobe"), &as_peer, &inputs);
+    let batch_p = batch_kernels(&format!("{name}: lobe batched"), &as_peer, &soa);
+    let peer_p = peer_kernels(&format!("{name}: bsdf"), &peer_conductor, &inputs64);
+    for ((a, b), c) in lobe_p.into_iter().zip(batch_p).zip(peer_p) {
         triples.push([a, b, c]);
     }
     let lobe_l = lobe_kernels("Lambert RGB: lobe", &lambert, &inputs);

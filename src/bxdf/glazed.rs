@@ -23,8 +23,10 @@ use glam::{Vec2, Vec3};
 /// conserving with the coupling of Kelemen & Szirmay-Kalos (2001, "A Microfacet Based Coupled
 /// Specular-Matte BRDF Model with Importance Sampling", eq. 5): the directional albedo is
 /// `F(cos θo) + (1 − F(cos θo)) ρ`, never above 1 and exactly 1 for `ρ = 1`. The diffuse
-/// term is symmetric in `wo` and `wi`, so the model is reciprocal. It does not model the
-/// light that the coat reflects back into the base (that would only add to `ρ`'s tint).
+/// term is symmetric in `wo` and `wi`, so the model is reciprocal. It leaves out the light
+/// the coat reflects back into the base, which a physical stack bounces again and partly
+/// absorbs: a smooth coat over Lambert with the same `ρ` and `η` ([`Layered`](super::Layered),
+/// which keeps it) is darker as well as more saturated.
 ///
 /// Sampling: the mirror lobe with probability `F / (F + (1 − F) ρ̄)` (`ρ̄` the mean channel),
 /// cosine-weighted directions otherwise. `F̄` is integrated once at construction.

@@ -79,6 +79,18 @@ const TAG_SAMPLE: u64 = 0x7361_6d70;
 /// would be zero whenever the top reflected, and a sample's `pdf` must be positive). Walks
 /// stop after `max_depth` events; `eval` and `pdf` count the same paths as `sample`.
 ///
+/// **A smooth top over a base with a delta lobe** (a mirror, a `Mix` with one, a `Glazed`)
+/// loses light: `eval` and `pdf` reach the exit under a smooth top only from the last
+/// non-delta event, straight through the top, so a path with a delta bounce between that event
+/// and the exit — a diffuse bounce, then the base's mirror, then out — is one no estimate of
+/// theirs can count (only a connection through the whole delta chain could), and `sample`
+/// drops it too, so that the three describe one BSDF (pbrt-v4's `LayeredBxDF` has the same
+/// limit in its `f` and `PDF`, and keeps those paths in its sampler). With a rough top, or a
+/// base without delta lobes, nothing is lost. How much: a smooth coat (η 1.5) over
+/// `Mix(Mirror, Lambert 0.8)` reflects 0.267 at normal incidence where the full walk carries
+/// 0.278 (4% lost); over a mirror under a scattering layer (albedo 0.9, thickness 0.5), 0.227
+/// at 45° for 0.366 (38%). `tests/bxdf_layered.rs` checks both against every law.
+///
 /// **Determinism and variance.** Each estimate draws from a PCG32 generator seeded with a
 /// hash of its arguments, so `eval(wo, wi)` repeats itself exactly (a reciprocity pair is
 /// reproducible) and [`Bxdf::eval_seeded`] gives independent estimates (`eval` is seed 0).
@@ -420,6 +432,14 @@ impl<T: LayerInterface, B: Bxdf> Layered<T, B> {
         let mut pdf = f64::from(s0.pdf);
         let mut specular = s0.is_specular();
         let mut glossy = s0.lobe.intersects(Lobes::GLOSSY);
+        // Under a smooth top, `eval` and `pdf` reach the exit only from the last non-delta
+        // event, straight through the top: a path with a delta bounce between that event and
+        // the exit (a mirror in the base, or the top's internal reflection onto one) is one
+        // they cannot count, so the sampler drops it too (pbrt-v4's `LayeredBxDF` loses the
+        // same paths in its `f` and `PDF`; a sampler that kept them weighed 38% more light
+        // than `eval` for a smooth coat over a mirror with a scattering layer).
+        let smooth_top = self.smooth_top();
+        let (mut scattered, mut delta_since) = (false, false);
         let mut walk = Walk {
             z: self.thickness,
             w: s0.wi,
@@ -437,6 +457,7 @@ impl<T: LayerInterface, B: Bxdf> Layered<T, B> {
                 beta = beta * self.albedo;
                 pdf *= f64::from(ps.pdf);
                 specular = false;
+                (scattered, delta_since) = (true, false);
                 walk.w = ps.wi;
                 continue;
             }
@@ -459,6 +480,9 @@ impl<T: LayerInterface, B: Bxdf> Layered<T, B> {
             glossy |= lobe.intersects(Lobes::GLOSSY);
             if walk.at_top && wi.z > 0.0 {
                 // Out through the top.
+                if smooth_top && scattered && delta_since {
+                    return None;
+                }
                 let kind = if specular {
                     Lobes::SPECULAR
                 } else if glossy {
@@ -467,6 +491,11 @@ impl<T: LayerInterface, B: Bxdf> Layered<T, B> {
                     Lobes::DIFFUSE
                 };
                 return Some((wi, beta, pdf, Lobes::REFLECTION | kind));
+            }
+            if lobe.is_specular() {
+                delta_since = scattered;
+            } else {
+                (scattered, delta_since) = (true, false);
             }
             walk.w = wi;
         }
