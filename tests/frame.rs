@@ -3,7 +3,7 @@
 
 mod common;
 
-use lobe::frame::{reflect_away, refract_away};
+use lobe::frame::{reflect_about, reflect_away, refract_away};
 use lobe::{Eta, Frame, Vec3};
 use proptest::prelude::*;
 
@@ -58,6 +58,23 @@ proptest! {
         prop_assert!((r.dot(n) - w.dot(n)).abs() < 1e-5);
         // Coplanar with w and n, and w + r lies along n.
         prop_assert!(((w + r).cross(n)).length() < 1e-5);
+    }
+
+    #[test]
+    fn reflection_about_any_length_is_the_reflection_about_the_unit_normal(
+        n in unit_vector(), w in unit_vector(), scale in -20.0f32..20.0,
+    ) {
+        // n scaled by 2^scale: the direction is reflected about the same line, to a few ulps
+        // of the f64 reflection about it.
+        let s = n * scale.exp2();
+        let r = reflect_about(w, s);
+        let f64s = |v: Vec3| [v.x as f64, v.y as f64, v.z as f64];
+        let (w64, s64, r64) = (f64s(w), f64s(s), f64s(r));
+        let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+        let k = 2.0 * dot(w64, s64) / dot(s64, s64);
+        let error = (0..3).map(|i| (r64[i] - (k * s64[i] - w64[i])).powi(2)).sum::<f64>().sqrt();
+        prop_assert!(error < 1e-6, "{:?}: {} from the reflection", r, error);
+        prop_assert!((r - reflect_away(w, n)).length() < 2e-6);
     }
 
     #[test]

@@ -8,6 +8,7 @@ mod common;
 use lobe::microfacet::{
     Beckmann, BeckmannMasking, BlinnPhongNdf, Ggx, Gtr, NormalDistribution, SampleDCos,
 };
+use lobe::frame::reflect_away;
 use lobe::{Alpha, Vec2, Vec3};
 use proptest::prelude::*;
 
@@ -152,6 +153,32 @@ proptest! {
         prop_assert!(b.is_finite() && (b.length() - 1.0).abs() < 1e-4 && b.z >= 0.0, "{b:?}");
         let p = ggx.d_visible_bounded(w, b);
         prop_assert!(p.is_finite() && p >= 0.0);
+    }
+}
+
+proptest! {
+    #![proptest_config(common::proptest_config(2048))]
+
+    /// `sample_reflected` (GGX and Beckmann reflect about their normal before normalising it)
+    /// is the view reflected about `sample_reflection`'s unit normal, to a few ulps, and unit.
+    #[test]
+    fn reflected_samples_reflect_about_the_sampled_normal(
+        kind in 0u8..6, ax in alpha(), ay in alpha(), gamma in 0.1f32..10.0,
+        w in direction(), u in (0.0f32..=1.0, 0.0f32..=1.0),
+    ) {
+        let d: Box<dyn NormalDistribution> = match kind {
+            4 => Box::new(Ggx::new(Alpha::new(ax).unwrap(), Alpha::new(ay).unwrap())
+                .with_bounded_reflection(false)),
+            5 => Box::new(Beckmann::new(Alpha::new(ax).unwrap(), Alpha::new(ay).unwrap())
+                .with_masking(BeckmannMasking::WalterRational)),
+            _ => exact(kind, ax, ay, gamma),
+        };
+        let u = Vec2::new(u.0, u.1);
+        let view = d.view(w);
+        let r = d.sample_reflected(&view, u);
+        let want = reflect_away(view.w, d.sample_reflection(&view, u));
+        prop_assert!((r - want).length() < 2e-6, "{r:?} against {want:?} for w = {w:?}, u = {u:?}");
+        prop_assert!((r.length() - 1.0).abs() < 2e-6, "|{r:?}| = {}", r.length());
     }
 }
 

@@ -2,7 +2,6 @@
 //! Fresnel term.
 
 use super::{At, BxdfSample, Lobes, Prepare, both_above, usable_pdf};
-use crate::frame::reflect_away;
 use crate::fresnel::{self, Fresnel};
 use crate::microfacet::{Masking, NormalDistribution, View};
 use crate::spectrum::Spectrum;
@@ -177,7 +176,8 @@ impl<D: NormalDistribution, F: Fresnel> Microfacet<D, F> {
     /// refuses it there, and where its density is unusable).
     #[inline(always)]
     pub(crate) fn sample_direction(&self, at: &At<View>, u: Vec2) -> Vec3 {
-        reflect_away(at.wo, self.distribution.sample_reflection(&at.state, u))
+        // The view's `w` is `wo` itself here: the callers sample for `wo` above the surface.
+        self.distribution.sample_reflected(&at.state, u)
     }
 
     /// [`Prepare::sample_prepared`] under `masking`.

@@ -1,6 +1,7 @@
 //! The Beckmann distribution, anisotropic, with exact Smith masking or Walter's rational fit.
 
-use super::{NormalDistribution, SampleDCos, Sampling, View, Widths, upper};
+use super::{NormalDistribution, SampleDCos, Sampling, View, Widths, upper, usable_normal};
+use crate::frame::reflect_about;
 use crate::math::{
     abs, copysign, erf_inv_approx, erfc_given_exp, erfcx_at, exp, ln, ln_1p, sin_cos_turns, sqrt,
 };
@@ -218,6 +219,22 @@ impl NormalDistribution for Beckmann {
     /// the inversion only needs `cos θ` and `sin θ` up to a common factor.
     #[inline]
     fn sample(&self, view: &View, u: Vec2) -> Vec3 {
+        self.visible_normal_unnormalized(view, u).normalize_or(Vec3::Z)
+    }
+
+    /// Reflects about the sampler's normal `(−αx x̃, −αy ỹ, 1)` before it is normalised
+    /// ([`reflect_about`]).
+    #[inline]
+    fn sample_reflected(&self, view: &View, u: Vec2) -> Vec3 {
+        reflect_about(view.w, usable_normal(self.visible_normal_unnormalized(view, u)))
+    }
+}
+
+impl Beckmann {
+    /// The visible normal [`sample`](NormalDistribution::sample) draws, before it is
+    /// normalised: `(−αx x̃, −αy ỹ, 1)` for the slopes `(x̃, ỹ)`.
+    #[inline(always)]
+    fn visible_normal_unnormalized(&self, view: &View, u: Vec2) -> Vec3 {
         let [x, y, r, ..] = view.extra;
         let cos_t = view.w.z;
         // The exact Λ gives the CDF's end: C(cot θ) = cos θ (1 + Λ), which is 1/visible.
@@ -235,7 +252,7 @@ impl NormalDistribution for Beckmann {
             (1.0, 0.0)
         };
         let (tx, ty) = (cos_p * sx - sin_p * sy, sin_p * sx + cos_p * sy);
-        Vec3::new(-self.width.ax * tx, -self.width.ay * ty, 1.0).normalize_or(Vec3::Z)
+        Vec3::new(-self.width.ax * tx, -self.width.ay * ty, 1.0)
     }
 }
 

@@ -1,6 +1,7 @@
 //! The GGX (Trowbridge-Reitz) distribution, anisotropic.
 
-use super::{NormalDistribution, SampleDCos, Sampling, View, Widths, upper};
+use super::{NormalDistribution, SampleDCos, Sampling, View, Widths, upper, usable_normal};
+use crate::frame::reflect_about;
 use crate::math::{safe_sqrt, sin_cos_turns, sqrt};
 use crate::param::Alpha;
 use glam::{Vec2, Vec3};
@@ -97,20 +98,24 @@ impl Ggx {
         Vec3::new(self.width.ax * w.x, self.width.ay * w.y, w.z).normalize_or(Vec3::Z)
     }
 
-    /// A normal of the hemisphere configuration mapped back to the ellipsoid one.
-    #[inline(always)]
-    fn unstretch(&self, h: Vec3) -> Vec3 {
-        Vec3::new(self.width.ax * h.x, self.width.ay * h.y, h.z.max(0.0)).normalize_or(Vec3::Z)
-    }
-
     /// The halfway vector of the view and a direction drawn uniformly from the spherical cap
-    /// `z ≥ −b` (Dupuy & Benyoub 2023, Listing 3; `b = wh.z` gives the visible normals).
+    /// `z ≥ −b` (Dupuy & Benyoub 2023, Listing 3; `b = wh.z` gives the visible normals),
+    /// mapped back from the hemisphere configuration to the ellipsoid one: a normal, not yet
+    /// of unit length (possibly zero).
     #[inline(always)]
-    fn sample_cap(&self, wh: Vec3, b: f32, u: Vec2) -> Vec3 {
+    fn sample_cap_unnormalized(&self, wh: Vec3, b: f32, u: Vec2) -> Vec3 {
         let z = (1.0 - u.y) * (1.0 + b) - b;
         let r = safe_sqrt(1.0 - z * z);
         let (s, c) = sin_cos_turns(u.x);
-        self.unstretch(Vec3::new(r * c, r * s, z) + wh)
+        let h = Vec3::new(r * c, r * s, z) + wh;
+        Vec3::new(self.width.ax * h.x, self.width.ay * h.y, h.z.max(0.0))
+    }
+
+    /// [`sample_cap_unnormalized`](Self::sample_cap_unnormalized) normalised (the normal `z`
+    /// for a zero vector).
+    #[inline(always)]
+    fn sample_cap(&self, wh: Vec3, b: f32, u: Vec2) -> Vec3 {
+        self.sample_cap_unnormalized(wh, b, u).normalize_or(Vec3::Z)
     }
 
     /// The lower end `b` of Eto & Tokuyoshi's bounded spherical cap for the view `w`
@@ -269,6 +274,16 @@ impl NormalDistribution for Ggx {
     #[inline(always)]
     fn sample_reflection(&self, view: &View, u: Vec2) -> Vec3 {
         self.sample_cap(stretched_view(view), view.extra[3], u)
+    }
+
+    /// Reflects about the bounded sampler's normal before it is normalised
+    /// ([`reflect_about`]); where that normal's squared length is not a normal `f32` (a zero
+    /// normal, whose unit form is `z`, as [`sample_reflection`](Self::sample_reflection)
+    /// has it), about `z`.
+    #[inline(always)]
+    fn sample_reflected(&self, view: &View, u: Vec2) -> Vec3 {
+        let m = self.sample_cap_unnormalized(stretched_view(view), view.extra[3], u);
+        reflect_about(view.w, usable_normal(m))
     }
 
     /// With `1 + Λ(w) = (L/|wz| + 1)/2` (Heitz 2014, eq. 86), `1 + Λo + Λi` is

@@ -299,6 +299,20 @@ pub trait NormalDistribution {
         self.sample(view, u)
     }
 
+    /// The view's `w` reflected about a normal drawn by
+    /// [`sample_reflection`](Self::sample_reflection) for `u`: `2 (w·m) m − w`, possibly below
+    /// the horizon (a reflection model refuses it there), with the density
+    /// [`pdf_reflection`](Self::pdf_reflection) gives. The default reflects about the unit
+    /// normal; a sampler that ends by normalising may instead reflect about the normal it
+    /// had before, with [`reflect_about`](crate::frame::reflect_about): one division in
+    /// place of a square root and a division, the same direction to `f32` round-off
+    /// ([`Ggx`] and [`Beckmann`] do).
+    #[inline(always)]
+    #[must_use]
+    fn sample_reflected(&self, view: &View, u: Vec2) -> Vec3 {
+        crate::frame::reflect_away(view.w, self.sample_reflection(view, u))
+    }
+
     /// The density, in solid angle of `wi`, of the direction `wi = 2 (w·m) m − w` reflected
     /// about a normal `m` drawn by [`sample_reflection`](Self::sample_reflection), given
     /// `d = D(m)` (`m` may be any positive multiple of the unit normal: the density depends on
@@ -340,6 +354,16 @@ pub trait SampleDCos: NormalDistribution {
     fn pdf_d_cos(&self, m: Vec3) -> f32 {
         self.d(m) * m.z.max(0.0)
     }
+}
+
+/// `m`, a normal not yet of unit length, where [`reflect_about`](crate::frame::reflect_about)
+/// can divide by its squared length (a normal `f32`), else the normal `z`: what a sampler's
+/// `normalize_or(Vec3::Z)` gives for a zero vector. (A squared length below
+/// `f32::MIN_POSITIVE` has lost its digits; the samplers' normals that short point along `z`.)
+#[inline(always)]
+fn usable_normal(m: Vec3) -> Vec3 {
+    let m2 = m.length_squared();
+    if (f32::MIN_POSITIVE..f32::INFINITY).contains(&m2) { m } else { Vec3::Z }
 }
 
 /// `w` turned into the upper hemisphere: `−w` when `w.z < 0`, else `w`.
