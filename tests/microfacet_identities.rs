@@ -5,10 +5,10 @@
 
 mod common;
 
+use lobe::frame::reflect_away;
 use lobe::microfacet::{
     Beckmann, BeckmannMasking, BlinnPhongNdf, Ggx, Gtr, NormalDistribution, SampleDCos,
 };
-use lobe::frame::reflect_away;
 use lobe::{Alpha, Vec2, Vec3};
 use proptest::prelude::*;
 

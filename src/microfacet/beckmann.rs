@@ -219,14 +219,18 @@ impl NormalDistribution for Beckmann {
     /// the inversion only needs `cos θ` and `sin θ` up to a common factor.
     #[inline]
     fn sample(&self, view: &View, u: Vec2) -> Vec3 {
-        self.visible_normal_unnormalized(view, u).normalize_or(Vec3::Z)
+        self.visible_normal_unnormalized(view, u)
+            .normalize_or(Vec3::Z)
     }
 
     /// Reflects about the sampler's normal `(−αx x̃, −αy ỹ, 1)` before it is normalised
     /// ([`reflect_about`]).
     #[inline]
     fn sample_reflected(&self, view: &View, u: Vec2) -> Vec3 {
-        reflect_about(view.w, usable_normal(self.visible_normal_unnormalized(view, u)))
+        reflect_about(
+            view.w,
+            usable_normal(self.visible_normal_unnormalized(view, u)),
+        )
     }
 }
 

@@ -363,7 +363,11 @@ pub trait SampleDCos: NormalDistribution {
 #[inline(always)]
 fn usable_normal(m: Vec3) -> Vec3 {
     let m2 = m.length_squared();
-    if (f32::MIN_POSITIVE..f32::INFINITY).contains(&m2) { m } else { Vec3::Z }
+    if (f32::MIN_POSITIVE..f32::INFINITY).contains(&m2) {
+        m
+    } else {
+        Vec3::Z
+    }
 }
 
 /// `w` turned into the upper hemisphere: `−w` when `w.z < 0`, else `w`.
