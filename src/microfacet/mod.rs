@@ -117,13 +117,17 @@ impl View {
 ///
 /// **What an implementation writes.** `D` ([`d`](Self::d)), Smith's `Λ`
 /// ([`lambda`](Self::lambda)), a sampler of normals ([`sample`](Self::sample)) and which
-/// density it draws from ([`sampling`](Self::sampling)); `Extra = ()` unless the sampler keeps
-/// per-view state. Everything else — `G1`, `G2`, the visible normals, the sampler's density —
-/// follows, and the crate's models ([`Microfacet`](crate::bxdf::Microfacet),
-/// [`RoughDielectric`](crate::bxdf::RoughDielectric), [`Plastic`](crate::bxdf::Plastic)) are
-/// then correct and fast for it: they prepare a [`View`] of `wo` once and evaluate `D` once
-/// per direction. Derive `Clone` (and `Copy`, if it holds only numbers) as well: the models'
-/// batched calls ([`Batch`](crate::batch::Batch)) clone the model, distribution included.
+/// density it draws from ([`sampling`](Self::sampling)). Everything else — `G1`, `G2`, the
+/// visible normals, the sampler's density — follows, and the crate's models
+/// ([`Microfacet`](crate::bxdf::Microfacet), [`RoughDielectric`](crate::bxdf::RoughDielectric),
+/// [`Plastic`](crate::bxdf::Plastic)) are then correct and fast for it: they prepare a
+/// [`View`] of `wo` once and evaluate `D` once per direction. The other methods are
+/// shortcuts a distribution may take where its formulas allow, each documented with the
+/// result it must keep: a sampler with per-view set-up overrides [`view`](Self::view) and
+/// keeps it in [`View::extra`]; [`Ggx`] also overrides `d_unnormalized`, `g1`, `visibility`,
+/// `sample_reflection`, `sample_reflected` and `pdf_reflection`. Derive `Clone` (and `Copy`,
+/// if it holds only numbers) as well: the models' batched calls
+/// ([`Batch`](crate::batch::Batch)) clone the model, distribution included.
 ///
 /// **The prepared view.** Everything that depends on the direction alone (`Λ(w)`,
 /// the visible-normal factor, the sampler's set-up) is computed once by [`view`](Self::view)
