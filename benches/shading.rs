@@ -8,7 +8,8 @@
 //!   `eval_pdf_prepared` (each light, each MIS pair at one shading point), and the unprepared
 //!   `eval` + `pdf` it replaces;
 //! * every distribution's `d`, `lambda`, `g1`, `view` (what a model prepares per `wo`) and
-//!   sampler on a prepared view (`sample`, and `sample_reflection` for GGX's bounded sampler);
+//!   sampler on a prepared view (`sample`, `sample_reflected` — the reflected direction a
+//!   reflection model draws — and `sample_reflection` for GGX's bounded sampler);
 //! * the four Fresnel functions.
 //!
 //! ```sh
@@ -24,7 +25,7 @@
 //! The transmissive models run on the same inputs with the sides mixed (`wi` below the
 //! surface for odd `k`, `wo` below for `k mod 4 ≥ 2`), so that refraction and the inside are
 //! timed too. Measurement windows are short (0.3 s warm-up, 1 s of 20 samples), so that the
-//! 82 benchmarks take about two minutes.
+//! 86 benchmarks take about two minutes.
 
 #[path = "common/inputs.rs"]
 mod inputs;
@@ -127,6 +128,13 @@ fn distribution<D: NormalDistribution>(
         b.iter(|| {
             for (view, &u) in views.iter().zip(&i.u) {
                 black_box(d.sample(view, u));
+            }
+        })
+    });
+    g.bench_function("sample_reflected", |b| {
+        b.iter(|| {
+            for (view, &u) in views.iter().zip(&i.u) {
+                black_box(d.sample_reflected(view, u));
             }
         })
     });
