@@ -1,7 +1,6 @@
 //! The Beckmann distribution, anisotropic, with exact Smith masking or Walter's rational fit.
 
-use super::{NormalDistribution, SampleDCos, Sampling, View, Widths, upper, usable_normal};
-use crate::frame::reflect_about;
+use super::{NormalDistribution, SampleDCos, Sampling, View, Widths, reflect_about_sampled, upper};
 use crate::math::{
     abs, copysign, erf_inv_approx, erfc_given_exp, erfcx_at, exp, ln, ln_1p, sin_cos_turns, sqrt,
 };
@@ -224,13 +223,10 @@ impl NormalDistribution for Beckmann {
     }
 
     /// Reflects about the sampler's normal `(−αx x̃, −αy ỹ, 1)` before it is normalised
-    /// ([`reflect_about`]).
+    /// ([`reflect_about`](crate::frame::reflect_about)).
     #[inline]
     fn sample_reflected(&self, view: &View, u: Vec2) -> Vec3 {
-        reflect_about(
-            view.w,
-            usable_normal(self.visible_normal_unnormalized(view, u)),
-        )
+        reflect_about_sampled(view.w, self.visible_normal_unnormalized(view, u))
     }
 }
 

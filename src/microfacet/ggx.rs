@@ -1,7 +1,6 @@
 //! The GGX (Trowbridge-Reitz) distribution, anisotropic.
 
-use super::{NormalDistribution, SampleDCos, Sampling, View, Widths, upper, usable_normal};
-use crate::frame::reflect_about;
+use super::{NormalDistribution, SampleDCos, Sampling, View, Widths, reflect_about_sampled, upper};
 use crate::math::{safe_sqrt, sin_cos_turns, sqrt};
 use crate::param::Alpha;
 use glam::{Vec2, Vec3};
@@ -277,13 +276,13 @@ impl NormalDistribution for Ggx {
     }
 
     /// Reflects about the bounded sampler's normal before it is normalised
-    /// ([`reflect_about`]); where that normal's squared length is not a normal `f32` (a zero
+    /// ([`reflect_about`](crate::frame::reflect_about)); where that normal's squared length is not a normal `f32` (a zero
     /// normal, whose unit form is `z`, as [`sample_reflection`](Self::sample_reflection)
     /// has it), about `z`.
     #[inline(always)]
     fn sample_reflected(&self, view: &View, u: Vec2) -> Vec3 {
         let m = self.sample_cap_unnormalized(stretched_view(view), view.extra[3], u);
-        reflect_about(view.w, usable_normal(m))
+        reflect_about_sampled(view.w, m)
     }
 
     /// With `1 + Λ(w) = (L/|wz| + 1)/2` (Heitz 2014, eq. 86), `1 + Λo + Λi` is

@@ -360,17 +360,19 @@ pub trait SampleDCos: NormalDistribution {
     }
 }
 
-/// `m`, a normal not yet of unit length, where [`reflect_about`](crate::frame::reflect_about)
-/// can divide by its squared length (a normal `f32`), else the normal `z`: what a sampler's
-/// `normalize_or(Vec3::Z)` gives for a zero vector. (A squared length below
-/// `f32::MIN_POSITIVE` has lost its digits; the samplers' normals that short point along `z`.)
+/// `w` reflected about a sampled normal `m` not yet of unit length:
+/// [`reflect_about`](crate::frame::reflect_about) where it can divide by `|m|²` (a normal
+/// `f32`), else about `z`, as a sampler's `normalize_or(Vec3::Z)` has it for a zero vector. (A
+/// squared length below `f32::MIN_POSITIVE` has lost its digits; the samplers' normals that
+/// short point along `z`.) The choice comes last, so that the division does not wait for it.
 #[inline(always)]
-fn usable_normal(m: Vec3) -> Vec3 {
+fn reflect_about_sampled(w: Vec3, m: Vec3) -> Vec3 {
     let m2 = m.length_squared();
+    let r = crate::frame::reflect_about(w, m);
     if (f32::MIN_POSITIVE..f32::INFINITY).contains(&m2) {
-        m
+        r
     } else {
-        Vec3::Z
+        Vec3::new(-w.x, -w.y, w.z)
     }
 }
 
