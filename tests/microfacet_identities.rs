@@ -182,6 +182,35 @@ proptest! {
     }
 }
 
+/// At the end `u.y = 1` GGX's cap sampler can return a normal of zero or subnormal squared
+/// length (the cap's lowest point on the stretched view's antipode): there the reflected
+/// sample is the reflection about the normalised normal, bit for bit, as it was before the
+/// samplers reflected about the unnormalised one (a fallback to `z` would turn a horizontal
+/// normal's reflection, below the surface, into an accepted mirror direction).
+#[test]
+fn reflected_samples_at_short_normals_reflect_about_the_normalised_one() {
+    let tiny = Alpha::new(1e-4).unwrap();
+    let one = Alpha::new(1.0).unwrap();
+    let cases = [
+        (Ggx::new(one, one).with_bounded_reflection(false), Vec3::Z),
+        (
+            Ggx::new(one, one).with_bounded_reflection(false),
+            Vec3::new(1e-20, 0.0, 1.0),
+        ),
+        (Ggx::new(tiny, tiny), Vec3::new(1e-12, 0.0, 1.0)),
+        (Ggx::new(tiny, tiny), Vec3::new(0.0, 1e-12, 1.0)),
+    ];
+    for (d, w) in cases {
+        let view = d.view(w);
+        for ux in [0.0, 0.3, 0.75] {
+            let u = Vec2::new(ux, 1.0);
+            let r = d.sample_reflected(&view, u);
+            let want = reflect_away(view.w, d.sample_reflection(&view, u));
+            assert_eq!(r, want, "w = {w:?}, u = {u:?}");
+        }
+    }
+}
+
 /// Walter's rational `G1` exceeds 1 by at most 6.1e-5 (just below `a = 1.6`), as its docs say.
 #[test]
 fn rational_g1_overshoot_is_bounded() {

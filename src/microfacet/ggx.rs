@@ -275,10 +275,8 @@ impl NormalDistribution for Ggx {
         self.sample_cap(stretched_view(view), view.extra[3], u)
     }
 
-    /// Reflects about the bounded sampler's normal before it is normalised
-    /// ([`reflect_about`](crate::frame::reflect_about)); where that normal's squared length is not a normal `f32` (a zero
-    /// normal, whose unit form is `z`, as [`sample_reflection`](Self::sample_reflection)
-    /// has it), about `z`.
+    /// Reflects about [`sample_reflection`](Self::sample_reflection)'s normal before it is
+    /// normalised ([`reflect_about`](crate::frame::reflect_about)).
     #[inline(always)]
     fn sample_reflected(&self, view: &View, u: Vec2) -> Vec3 {
         let m = self.sample_cap_unnormalized(stretched_view(view), view.extra[3], u);

@@ -125,7 +125,8 @@ impl View {
 /// shortcuts a distribution may take where its formulas allow, each documented with the
 /// result it must keep: a sampler with per-view set-up overrides [`view`](Self::view) and
 /// keeps it in [`View::extra`]; [`Ggx`] also overrides `d_unnormalized`, `g1`, `visibility`,
-/// `sample_reflection`, `sample_reflected` and `pdf_reflection`. Derive `Clone` (and `Copy`,
+/// `sample_reflection`, `sample_reflected` and `pdf_reflection`, [`Beckmann`]
+/// `d_unnormalized`, `g1` and `sample_reflected`. Derive `Clone` (and `Copy`,
 /// if it holds only numbers) as well: the models' batched calls
 /// ([`Batch`](crate::batch::Batch)) clone the model, distribution included.
 ///
@@ -362,9 +363,10 @@ pub trait SampleDCos: NormalDistribution {
 
 /// `w` reflected about a sampled normal `m` not yet of unit length:
 /// [`reflect_about`](crate::frame::reflect_about) where it can divide by `|m|²` (a normal
-/// `f32`), else about `z`, as a sampler's `normalize_or(Vec3::Z)` has it for a zero vector. (A
-/// squared length below `f32::MIN_POSITIVE` has lost its digits; the samplers' normals that
-/// short point along `z`.) The choice comes last, so that the division does not wait for it.
+/// `f32`); elsewhere (a zero, subnormal or infinite `|m|²`, reached only at the ends of the
+/// samplers' `u`) what the samplers did before they reflected about `m` directly, the
+/// reflection about `m.normalize_or(Vec3::Z)`. The range test is made after the division,
+/// so that the division does not wait for it.
 #[inline(always)]
 fn reflect_about_sampled(w: Vec3, m: Vec3) -> Vec3 {
     let m2 = m.length_squared();
@@ -372,7 +374,7 @@ fn reflect_about_sampled(w: Vec3, m: Vec3) -> Vec3 {
     if (f32::MIN_POSITIVE..f32::INFINITY).contains(&m2) {
         r
     } else {
-        Vec3::new(-w.x, -w.y, w.z)
+        crate::frame::reflect_away(w, m.normalize_or(Vec3::Z))
     }
 }
 
