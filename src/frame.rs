@@ -176,8 +176,9 @@ pub fn reflect_away(w: Vec3, n: Vec3) -> Vec3 {
 /// division; and closer to the exact reflection about `n` (over GGX's visible normals at
 /// α 0.3, mean error 6.8e-8 against 1.0e-7 by normalising first, largest 5.1e-7 against
 /// 6.9e-7). Precondition: `n·n` is a normal `f32` (at least `f32::MIN_POSITIVE` and
-/// finite): below, the division loses digits or divides by zero (the crate's microfacet
-/// samplers reflect about `n.normalize_or(Vec3::Z)` there instead).
+/// finite): below, the division loses digits or divides by zero. (Scaling `n` by a power
+/// of two first changes no bit of the result where neither form leaves the normal range,
+/// and can bring `n·n` into it: the crate's microfacet samplers scale by 2³².)
 #[inline(always)]
 #[must_use]
 pub fn reflect_about(w: Vec3, n: Vec3) -> Vec3 {

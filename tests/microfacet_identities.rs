@@ -184,9 +184,10 @@ proptest! {
 
 /// At the end `u.y = 1` GGX's cap sampler can return a normal of zero or subnormal squared
 /// length (the cap's lowest point on the stretched view's antipode): there the reflected
-/// sample is the reflection about the normalised normal, bit for bit, as it was before the
-/// samplers reflected about the unnormalised one (a fallback to `z` would turn a horizontal
-/// normal's reflection, below the surface, into an accepted mirror direction).
+/// sample is still the reflection about that normal, on the same side of the surface as the
+/// reflection about the normalised normal and within round-off of it (a fallback to `z` had
+/// turned a horizontal normal's reflection, below the surface, into an accepted mirror
+/// direction), and the reflection about `z` for a zero normal.
 #[test]
 fn reflected_samples_at_short_normals_reflect_about_the_normalised_one() {
     let tiny = Alpha::new(1e-4).unwrap();
@@ -197,6 +198,10 @@ fn reflected_samples_at_short_normals_reflect_about_the_normalised_one() {
             Ggx::new(one, one).with_bounded_reflection(false),
             Vec3::new(1e-20, 0.0, 1.0),
         ),
+        (
+            Ggx::new(one, one).with_bounded_reflection(false),
+            Vec3::new(0.0, -3e-21, 1.0),
+        ),
         (Ggx::new(tiny, tiny), Vec3::new(1e-12, 0.0, 1.0)),
         (Ggx::new(tiny, tiny), Vec3::new(0.0, 1e-12, 1.0)),
     ];
@@ -206,7 +211,10 @@ fn reflected_samples_at_short_normals_reflect_about_the_normalised_one() {
             let u = Vec2::new(ux, 1.0);
             let r = d.sample_reflected(&view, u);
             let want = reflect_away(view.w, d.sample_reflection(&view, u));
-            assert_eq!(r, want, "w = {w:?}, u = {u:?}");
+            assert!(
+                (r - want).length() < 1e-6 && (r.z > 0.0) == (want.z > 0.0),
+                "w = {w:?}, u = {u:?}: {r:?} against {want:?}"
+            );
         }
     }
 }
