@@ -178,7 +178,7 @@ pub fn reflect_away(w: Vec3, n: Vec3) -> Vec3 {
 /// 6.9e-7). Precondition: `n·n` is a normal `f32` (at least `f32::MIN_POSITIVE` and
 /// finite): below, the division loses digits or divides by zero. (Scaling `n` by a power
 /// of two first changes no bit of the result where neither form leaves the normal range,
-/// and can bring `n·n` into it: the crate's microfacet samplers scale by 2³².)
+/// and can bring `n·n` into it: GGX's sampler scales by 2³².)
 #[inline(always)]
 #[must_use]
 pub fn reflect_about(w: Vec3, n: Vec3) -> Vec3 {

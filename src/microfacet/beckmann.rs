@@ -1,6 +1,7 @@
 //! The Beckmann distribution, anisotropic, with exact Smith masking or Walter's rational fit.
 
-use super::{NormalDistribution, SampleDCos, Sampling, View, Widths, reflect_about_sampled, upper};
+use super::{NormalDistribution, SampleDCos, Sampling, View, Widths, upper};
+use crate::frame::reflect_about;
 use crate::math::{
     abs, copysign, erf_inv_approx, erfc_given_exp, erfcx_at, exp, ln, ln_1p, sin_cos_turns, sqrt,
 };
@@ -223,10 +224,11 @@ impl NormalDistribution for Beckmann {
     }
 
     /// Reflects about the sampler's normal `(−αx x̃, −αy ỹ, 1)` before it is normalised
-    /// ([`reflect_about`](crate::frame::reflect_about)).
+    /// ([`reflect_about`]): its squared length is at least 1 and finite (the slopes are
+    /// bounded), always in [`reflect_about`]'s range.
     #[inline]
     fn sample_reflected(&self, view: &View, u: Vec2) -> Vec3 {
-        reflect_about_sampled(view.w, self.visible_normal_unnormalized(view, u))
+        reflect_about(view.w, self.visible_normal_unnormalized(view, u))
     }
 }
 

@@ -361,32 +361,6 @@ pub trait SampleDCos: NormalDistribution {
     }
 }
 
-/// `w` reflected about a sampled normal `m` not yet of unit length, with
-/// [`reflect_about`](crate::frame::reflect_about), after scaling `m` by 2³² (exact, so the
-/// same bits wherever `|m|²` is a normal `f32` unscaled; it keeps `|m|²` normal down to
-/// `|m| = 2.5e-29`, where a sampler's normal could be short at the ends of its `u` and still
-/// point anywhere: GGX's cap at `u.y = 1` gives `(1e-20, 0, 0)` for the view
-/// `(1e-20, 0, 1)`). A normal shorter than that (zero, for GGX's cap: a sum of floats near 1
-/// cancels to 0 or to at least ~1e-8, so only components that are exactly 0, or built from
-/// subnormal inputs, get there) is taken as `z`, as the samplers' `normalize_or(Vec3::Z)`
-/// has it.
-///
-/// The choice is a select, not a branch, and costs no division of its own: the loops that
-/// draw from two lobes in every lane (the compensated conductor's batched `sample`) stop
-/// vectorising with a second division or square root in this function (16.3 → 75 ns per
-/// lane).
-#[inline(always)]
-fn reflect_about_sampled(w: Vec3, m: Vec3) -> Vec3 {
-    let m = m * 4_294_967_296.0;
-    let m2 = m.length_squared();
-    let r = crate::frame::reflect_about(w, m);
-    if (f32::MIN_POSITIVE..f32::INFINITY).contains(&m2) {
-        r
-    } else {
-        Vec3::new(-w.x, -w.y, w.z)
-    }
-}
-
 /// `w` turned into the upper hemisphere: `−w` when `w.z < 0`, else `w`.
 ///
 /// A direction below the macro-surface sees the microsurface from the inside, where the
