@@ -177,8 +177,8 @@ pub fn reflect_away(w: Vec3, n: Vec3) -> Vec3 {
 /// α 0.3, mean error 6.8e-8 against 1.0e-7 by normalising first, largest 5.1e-7 against
 /// 6.9e-7). Precondition: `n·n` is a normal `f32` (at least `f32::MIN_POSITIVE` and
 /// finite): below, the division loses digits or divides by zero. (Scaling `n` by a power
-/// of two first changes no bit of the result where neither form leaves the normal range,
-/// and can bring `n·n` into it: GGX's sampler scales by 2³².)
+/// of two first changes no bit of the result unless an intermediate is subnormal in one of
+/// the two forms, and can bring `n·n` into range: GGX's sampler scales by 2³².)
 #[inline(always)]
 #[must_use]
 pub fn reflect_about(w: Vec3, n: Vec3) -> Vec3 {

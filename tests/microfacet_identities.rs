@@ -204,6 +204,12 @@ fn reflected_samples_at_short_normals_reflect_about_the_normalised_one() {
         ),
         (Ggx::new(tiny, tiny), Vec3::new(1e-12, 0.0, 1.0)),
         (Ggx::new(tiny, tiny), Vec3::new(0.0, 1e-12, 1.0)),
+        // Short normals whose unscaled squared length underflows to 0 (a review's cases).
+        (
+            Ggx::new(one, one).with_bounded_reflection(false),
+            Vec3::new(1e-25, 0.0, 1.0),
+        ),
+        (Ggx::new(tiny, tiny), Vec3::new(1e-20, 0.0, 1.0)),
     ];
     for (d, w) in cases {
         let view = d.view(w);

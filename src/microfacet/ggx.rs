@@ -110,11 +110,32 @@ impl Ggx {
     }
 
     /// [`sample_cap_halfway`](Self::sample_cap_halfway) mapped back to the ellipsoid
-    /// configuration and normalised (the normal `z` for a zero vector).
+    /// configuration, scaled by 2³², and whether its squared length is a normal `f32`.
+    ///
+    /// The scale is exact and folded into the widths (no step added to the chain): the bits
+    /// of what is made of it (the unit normal, the reflection about it) are those of the
+    /// unscaled normal unless an intermediate is subnormal in one of the two forms, and the
+    /// squared length stays normal down to `|m| = 2.5e-29`. At `u.y = 1` the cap's point can
+    /// sit on the stretched view's antipode and leave a short normal that still points
+    /// anywhere: the view `(1e-25, 0, 1)`, α 1, plain cap, gives `(1e-25, 0, 0)`, horizontal,
+    /// whose unscaled squared length underflows to 0. Shorter than 2.5e-29, the normal is
+    /// taken as `z`.
+    #[inline(always)]
+    fn sample_cap_normal(&self, wh: Vec3, b: f32, u: Vec2) -> (Vec3, bool) {
+        const SCALE: f32 = 4_294_967_296.0;
+        let h = self.sample_cap_halfway(wh, b, u);
+        let (ax, ay) = (SCALE * self.width.ax, SCALE * self.width.ay);
+        let m = Vec3::new(ax * h.x, ay * h.y, SCALE * h.z.max(0.0));
+        let usable = (f32::MIN_POSITIVE..f32::INFINITY).contains(&m.length_squared());
+        (m, usable)
+    }
+
+    /// [`sample_cap_normal`](Self::sample_cap_normal) normalised (`z` where it is too short).
     #[inline(always)]
     fn sample_cap(&self, wh: Vec3, b: f32, u: Vec2) -> Vec3 {
-        let h = self.sample_cap_halfway(wh, b, u);
-        Vec3::new(self.width.ax * h.x, self.width.ay * h.y, h.z.max(0.0)).normalize_or(Vec3::Z)
+        let (m, usable) = self.sample_cap_normal(wh, b, u);
+        let unit = m.normalize_or(Vec3::Z);
+        if usable { unit } else { Vec3::Z }
     }
 
     /// The lower end `b` of Eto & Tokuyoshi's bounded spherical cap for the view `w`
@@ -276,27 +297,17 @@ impl NormalDistribution for Ggx {
     }
 
     /// Reflects about [`sample_reflection`](Self::sample_reflection)'s normal before it is
-    /// normalised, scaled by 2³² ([`reflect_about`]; the scale folded into the widths, so
-    /// that it adds no step to the chain). The scale is exact, so the bits are those of the
-    /// unscaled normal wherever its squared length is a normal `f32`, and it keeps that
-    /// squared length normal down to `|m| = 2.5e-29`: at `u.y = 1` the cap's point can sit on
-    /// the stretched view's antipode and leave a short normal that still points anywhere
-    /// (the view `(1e-20, 0, 1)`, α 1, plain cap: `(1e-20, 0, 0)`, horizontal, whose
-    /// reflection is below the surface). A normal shorter than that is zero but for
-    /// components built from subnormal inputs (a cancellation of floats near 1 gives 0 or at
-    /// least ~1e-8), and is taken as `z`, as `normalize_or(Vec3::Z)` has it. The choice is a
-    /// select with no division of its own: a batch computes it in every lane, and a second
-    /// division or square root there stopped the compensated conductor's batched `sample`,
-    /// which draws from two lobes in every lane, from vectorising (16.3 → 75 ns per lane).
+    /// normalised ([`reflect_about`] about that normal scaled by 2³², exact; about `z` where
+    /// it is shorter than 2.5e-29, as `sample_reflection` has it). The choice is a select with no division of its own: a
+    /// batch computes it in every lane, and a second division or square root there stopped
+    /// the compensated conductor's batched `sample`, which draws from two lobes in every
+    /// lane, from vectorising (16.3 → 75 ns per lane).
     #[inline(always)]
     fn sample_reflected(&self, view: &View, u: Vec2) -> Vec3 {
-        const SCALE: f32 = 4_294_967_296.0;
-        let h = self.sample_cap_halfway(stretched_view(view), view.extra[3], u);
-        let (ax, ay) = (SCALE * self.width.ax, SCALE * self.width.ay);
-        let m = Vec3::new(ax * h.x, ay * h.y, SCALE * h.z.max(0.0));
+        let (m, usable) = self.sample_cap_normal(stretched_view(view), view.extra[3], u);
         let w = view.w;
         let r = reflect_about(w, m);
-        if (f32::MIN_POSITIVE..f32::INFINITY).contains(&m.length_squared()) {
+        if usable {
             r
         } else {
             Vec3::new(-w.x, -w.y, w.z)

@@ -69,7 +69,8 @@ pub struct View {
     /// density the sampler draws, while `lambda` is the approximation's.
     pub visible: f32,
     /// Room for what the distribution's own sampler keeps about `w` ([`Ggx`]: its stretched
-    /// view and bounded cap), written and read by the distribution alone; zero otherwise.
+    /// view and bounded cap; [`Beckmann`]: the view's stretched tangent part and its
+    /// length), written and read by the distribution alone; zero otherwise.
     pub extra: [f32; 6],
 }
 
