@@ -161,17 +161,18 @@ proptest! {
 
     /// `sample_reflected` (GGX and Beckmann reflect about their normal before normalising it)
     /// is the view reflected about `sample_reflection`'s unit normal, to a few ulps, and unit.
+    /// (Only the distributions that override it: for the others it is that reflection.)
     #[test]
     fn reflected_samples_reflect_about_the_sampled_normal(
-        kind in 0u8..6, ax in alpha(), ay in alpha(), gamma in 0.1f32..10.0,
+        kind in 0u8..4, ax in alpha(), ay in alpha(),
         w in direction(), u in (0.0f32..=1.0, 0.0f32..=1.0),
     ) {
+        let (ax, ay) = (Alpha::new(ax).unwrap(), Alpha::new(ay).unwrap());
         let d: Box<dyn NormalDistribution> = match kind {
-            4 => Box::new(Ggx::new(Alpha::new(ax).unwrap(), Alpha::new(ay).unwrap())
-                .with_bounded_reflection(false)),
-            5 => Box::new(Beckmann::new(Alpha::new(ax).unwrap(), Alpha::new(ay).unwrap())
-                .with_masking(BeckmannMasking::WalterRational)),
-            _ => exact(kind, ax, ay, gamma),
+            0 => Box::new(Ggx::new(ax, ay)),
+            1 => Box::new(Ggx::new(ax, ay).with_bounded_reflection(false)),
+            2 => Box::new(Beckmann::new(ax, ay)),
+            _ => Box::new(Beckmann::new(ax, ay).with_masking(BeckmannMasking::WalterRational)),
         };
         let u = Vec2::new(u.0, u.1);
         let view = d.view(w);

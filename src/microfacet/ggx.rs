@@ -298,10 +298,10 @@ impl NormalDistribution for Ggx {
 
     /// Reflects about [`sample_reflection`](Self::sample_reflection)'s normal before it is
     /// normalised ([`reflect_about`] about that normal scaled by 2³², exact; about `z` where
-    /// it is shorter than 2.5e-29, as `sample_reflection` has it). The choice is a select with no division of its own: a
-    /// batch computes it in every lane, and a second division or square root there stopped
-    /// the compensated conductor's batched `sample`, which draws from two lobes in every
-    /// lane, from vectorising (16.3 → 75 ns per lane).
+    /// it is shorter than 2.5e-29, as `sample_reflection` has it). The choice is a select
+    /// with no division of its own: a batch computes it in every lane, and a second division
+    /// or square root there stopped the compensated conductor's batched `sample`, which
+    /// draws from two lobes in every lane, from vectorising (16.3 → 75 ns per lane).
     #[inline(always)]
     fn sample_reflected(&self, view: &View, u: Vec2) -> Vec3 {
         let (m, usable) = self.sample_cap_normal(stretched_view(view), view.extra[3], u);
@@ -314,6 +314,9 @@ impl NormalDistribution for Ggx {
         }
     }
 
+    /// With `1 + Λ(w) = (L/|wz| + 1)/2` (Heitz 2014, eq. 86), `1 + Λo + Λi` is
+    /// `(Lo |zi| + Li |zo|) / (2 |zo zi|)` and `V = G2 / (4 |zo zi|) = 1 / (2 (Lo |zi| + Li |zo|))`:
+    /// one square root and one division for the pair.
     #[inline(always)]
     fn visibility(&self, view: &View, wi: Vec3) -> f32 {
         let zi = wi.z.abs();
