@@ -7,7 +7,8 @@
 //! * `eval`, `pdf` and `sample` of `CoatedDiffuse` (GGX `α = 0.3`, `η = 1.5`) and
 //!   `CoatedConductor` (coat GGX `α = 0.1`, gold GGX `α = 0.3`) at the default sample count
 //!   (one walk per `eval` and `pdf`), and `CoatedDiffuse` with four walks, and with a
-//!   scattering layer; the construction of a `Sheen` (its albedo table).
+//!   scattering layer; the construction of a `Sheen` (its albedo table; with the exact Smith
+//!   masking, its `G1` table too).
 //!
 //! ```sh
 //! cargo bench --bench combinators
@@ -80,10 +81,19 @@ fn combinators(c: &mut Criterion) {
         &two_sided(&i),
     );
     model(c, "Sheen RGB r 0.5", &Sheen::new(rho, 0.5).unwrap(), &i);
+    model(
+        c,
+        "Sheen RGB r 0.5, exact Smith",
+        &Sheen::new(rho, 0.5).unwrap().with_exact_smith(),
+        &i,
+    );
     let mut g = group(c, "Sheen construction");
     g.throughput(Throughput::Elements(1));
     g.bench_function("Sheen::new", |b| {
         b.iter(|| black_box(Sheen::new(black_box(rho), 0.5).unwrap()))
+    });
+    g.bench_function("Sheen::with_exact_smith", |b| {
+        b.iter(|| black_box(Sheen::new(black_box(rho), 0.5).unwrap().with_exact_smith()))
     });
     g.finish();
 }

@@ -1188,13 +1188,19 @@ fn push_compositions(c: &mut Configs) {
         None,
         DiffuseTransmission::new(rgb, Vec3::new(0.0, 0.5, 1.0)).unwrap(),
     );
-    // Sheen at the ends of its roughness.
+    // Sheen at the ends of its roughness, with the fitted and the exact Smith masking.
     for r in [0.01f32, 0.3, 1.0] {
         c.push(
             "Sheen",
             format!("r {r}, colour (1, 0.5, 0) RGB"),
             None,
             Sheen::new(rgb, r).unwrap(),
+        );
+        c.push(
+            "Sheen",
+            format!("r {r}, exact Smith, colour (1, 0.5, 0) RGB"),
+            None,
+            Sheen::new(rgb, r).unwrap().with_exact_smith(),
         );
     }
 }

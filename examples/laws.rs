@@ -237,6 +237,10 @@ fn models() -> Result<Vec<Entry>, ParamError> {
         entry("Sheen r=0.5", Sheen::new(1.0, 0.5)?),
         entry("Sheen r=0.03", Sheen::new(1.0, 0.03)?),
         entry(
+            "Sheen r=0.03, exact Smith",
+            Sheen::new(1.0, 0.03)?.with_exact_smith(),
+        ),
+        entry(
             "CoatedDiffuse GGX α=0.3 η=1.5 ρ=0.8 (stochastic)",
             CoatedDiffuse::coated_diffuse(0.8, Ggx::isotropic(a(0.3)?), glass)?,
         ),

@@ -514,6 +514,10 @@ fn the_combinators_and_layered_models_equal_the_scalar_path() {
         &DiffuseTransmission::new(rgb * 0.5, rgb * 0.4).unwrap(),
     );
     check("Sheen", &Sheen::new(rgb, 0.4).unwrap());
+    check(
+        "Sheen, exact Smith",
+        &Sheen::new(rgb, 0.05).unwrap().with_exact_smith(),
+    );
 }
 
 /// The energy-compensated models: Kulla & Conty's lobe on a conductor and on a white

@@ -23,7 +23,7 @@ use lobe::verify::strategies::{
 use lobe::{Alpha, ComplexIor, Eta, Roughness, Vec2, Vec3};
 use proptest::prelude::*;
 
-const MODELS: u8 = 27;
+const MODELS: u8 = 28;
 
 /// Model `kind` built from the random parameters.
 fn model(
@@ -129,6 +129,7 @@ fn model(
         ))),
         25 => Box::new(DiffuseTransmission::new(0.5 * t, 0.5 * (1.0 - t)).unwrap()),
         26 => Box::new(Sheen::new(t, t.max(0.01)).unwrap()),
+        27 => Box::new(Sheen::new(t, t.max(0.01)).unwrap().with_exact_smith()),
         _ => Box::new(Microfacet::new(
             Ggx::new(a, b).with_bounded_reflection(false),
             masking,

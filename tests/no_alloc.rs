@@ -495,6 +495,11 @@ fn composed_models_do_not_allocate() {
         &i,
     );
     assert_no_alloc("Sheen", &Sheen::new(rgb, 0.3).unwrap(), &i);
+    assert_no_alloc(
+        "Sheen, exact Smith",
+        &Sheen::new(rgb, 0.3).unwrap().with_exact_smith(),
+        &i,
+    );
 }
 
 /// The batched calls (`lobe::batch`) of the three models the issue names, RGB and mono,

@@ -154,6 +154,15 @@ fn diffuse_transmission_and_sheen_are_their_constructors_parameters() {
     let read: Sheen<Vec3> =
         serde_json::from_str(r#"{ "color": [0.9, 0.2, 0.3], "roughness": 0.5 }"#).unwrap();
     assert_eq!(read, velvet);
+    // The exact Smith masking travels as a flag; the fit, the default, is not written.
+    let exact = Sheen::new(Vec3::new(0.9, 0.2, 0.3), 0.03)
+        .unwrap()
+        .with_exact_smith();
+    assert_wire(
+        &exact,
+        r#"{"color":[0.9,0.2,0.3],"roughness":0.03,"exact_smith":true}"#,
+    );
+    round_trip(&Sheen::new(0.7_f32, 0.3).unwrap().with_exact_smith());
     assert_refused::<Sheen>(
         r#"{"color":0.5,"roughness":0.001}"#,
         "invalid roughness = 0.001: expected a value in [0.01, 1]",

@@ -78,16 +78,21 @@ impl SmithTable {
         } else {
             v / (v + self.spread)
         };
-        let x = p.max(0.0) * (ENTRIES - 1) as f32;
-        let i = (x as usize).min(ENTRIES - 2);
-        let f = x - i as f32;
-        let [a, b, c, e] = [self.g1[i], self.g1[i + 1], self.g1[i + 2], self.g1[i + 3]];
-        // Catmull-Rom through the nodes i − 1 .. i + 2 (padded indices i .. i + 3).
-        let g = b + 0.5
-            * f
-            * (c - a + f * (2.0 * a - 5.0 * b + 4.0 * c - e + f * (3.0 * (b - c) + e - a)));
-        g.clamp(0.0, 1.0)
+        catmull_rom(&self.g1, p.max(0.0) * (ENTRIES - 1) as f32).clamp(0.0, 1.0)
     }
+}
+
+/// The Catmull-Rom cubic through equally spaced nodes, at `x ≥ 0` node spacings past the first
+/// node; `g` holds the nodes between one extrapolated value before the first and one after
+/// the last (so `N − 2` nodes), and `x` beyond the last node extrapolates the last interval's
+/// cubic.
+#[inline(always)]
+pub(crate) fn catmull_rom<const N: usize>(g: &[f32; N], x: f32) -> f32 {
+    let i = (x as usize).min(N - 4);
+    let f = x - i as f32;
+    let [a, b, c, e] = [g[i], g[i + 1], g[i + 2], g[i + 3]];
+    // Through the nodes i − 1 .. i + 2 (padded indices i .. i + 3).
+    b + 0.5 * f * (c - a + f * (2.0 * a - 5.0 * b + 4.0 * c - e + f * (3.0 * (b - c) + e - a)))
 }
 
 /// `asinh x` for `x ≥ 0` (`+∞` at `+∞`), accurate near 0.

@@ -1,5 +1,5 @@
 //! The glossy models: [`Phong`] and [`BlinnPhong`], as `kd`, `ks`, the exponent (and
-//! Blinn-Phong's form), and [`Sheen`], as its colour and roughness. The lobes'
+//! Blinn-Phong's form), and [`Sheen`], as its colour and roughness (and its masking). The lobes'
 //! normalisations, sampling weights and the sheen's albedo table are computed again on the
 //! way in.
 
@@ -29,9 +29,15 @@ wire! {
 }
 
 wire! {
-    /// [`Sheen`] on the wire: `{ "color": …, "roughness": 0.5 }`.
+    /// [`Sheen`] on the wire: `{ "color": …, "roughness": 0.5 }`, and `"exact_smith": true`
+    /// for the exact Smith masking instead of the fit.
     impl[S: Spectrum] Sheen<S> as "Sheen" SheenRepr<S> |m| {
         color: S = m.color(),
         roughness: f32 = m.roughness(),
-    } via |r| Sheen::new(r.color, r.roughness)
+        #[serde(default, skip_serializing_if = "is_default")]
+        exact_smith: bool = m.has_exact_smith(),
+    } via |r| {
+        Sheen::new(r.color, r.roughness)
+            .map(|s| if r.exact_smith { s.with_exact_smith() } else { s })
+    }
 }

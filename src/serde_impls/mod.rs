@@ -68,7 +68,7 @@
 //! | [`CompensatedDielectric`](crate::bxdf::CompensatedDielectric) | `{"distribution": {"alpha": 0.3}, "eta": 1.5}`; `"mode": "importance"` |
 //! | [`Compensation`](crate::bxdf::Compensation) | `"kulla_conty"`, `"turquin"` |
 //! | [`DiffuseTransmission`](crate::bxdf::DiffuseTransmission) | `{"reflectance": [0.3, 0.5, 0.1], "transmittance": [0.2, 0.4, 0.1]}` |
-//! | [`Sheen`](crate::bxdf::Sheen) | `{"color": [0.9, 0.2, 0.3], "roughness": 0.5}` |
+//! | [`Sheen`](crate::bxdf::Sheen) | `{"color": [0.9, 0.2, 0.3], "roughness": 0.5}`; `"exact_smith": true` for the exact masking |
 //! | [`Mix`](crate::bxdf::Mix) | `{"first": …, "second": …, "weight": 0.3}` (the weight of `second`) |
 //! | [`TwoSided`](crate::bxdf::TwoSided) | `{"inner": …}` |
 //! | [`Layered`](crate::bxdf::Layered), `CoatedDiffuse`, `CoatedConductor` | `{"top": …, "bottom": …}`; `"thickness": 0.1`, `"medium": {"albedo": [0.5, 0.5, 0.5], "g": 0.3}`, `"max_depth": 32`, `"samples": 4` |
