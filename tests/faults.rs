@@ -35,7 +35,7 @@ use common::buggy_ggx::{BuggyNdf, NdfBug};
 
 /// Harness runs in this file (one per entry, plus the correct counterparts): the family's
 /// 1% chance of failing a correct law is shared among them.
-const RUNS: usize = 36;
+const RUNS: usize = 38;
 
 /// A small but sufficient budget: every bug below is caught by a wide margin at it.
 fn config() -> Config {
@@ -917,6 +917,38 @@ fn transmission_without_eta_squared_fails_generalised_reciprocity() {
 // ---------------------------------------------------------------------------------------
 // The correct counterparts
 // ---------------------------------------------------------------------------------------
+
+/// **A chi-square without degrees of freedom** (a budget so small that every bin expects
+/// fewer than five samples, so all are pooled into one) is a failed check reported as
+/// `p = NaN`, not a pass behind a p-value of 1: for a model (`sampling_chi2`, through
+/// `check_bxdf`) and for a distribution (`check_ndf`), whose other laws still pass.
+#[test]
+fn chi_square_without_degrees_of_freedom_fails_with_a_nan_p_value() {
+    let starved = Config {
+        chi2_samples: 100,
+        ..config()
+    };
+    let lambert = lobe::bxdf::Lambert::new(0.8_f32).unwrap();
+    let report = check_bxdf("Lambert ρ=0.8, 100 χ² samples", &lambert, &starved);
+    assert_caught(&report, &[Law::Sampling]);
+    let sampling = report.get(Law::Sampling).unwrap();
+    assert!(sampling.figure.is_nan(), "{sampling}");
+    assert!(sampling.to_string().contains("p = NaN"), "{sampling}");
+
+    let ndf = Config {
+        chi2_samples: 100,
+        ..ndf_config(NDF_ALPHA)
+    };
+    let report = check_ndf(
+        "GGX α=0.3, 100 χ² samples",
+        &BuggyNdf::new(NDF_ALPHA, NdfBug::None),
+        &ndf,
+    );
+    assert_caught(&report, &[Law::Sampling]);
+    let sampling = report.get(Law::Sampling).unwrap();
+    assert!(sampling.figure.is_nan(), "{sampling}");
+    assert!(sampling.to_string().contains("p = NaN"), "{sampling}");
+}
 
 /// Every model and distribution of the corpus without its bug passes every law, under the
 /// same budgets: the failures above are the bugs', not the harness's.
