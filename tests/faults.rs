@@ -915,7 +915,7 @@ fn transmission_without_eta_squared_fails_generalised_reciprocity() {
 }
 
 // ---------------------------------------------------------------------------------------
-// The correct counterparts
+// A budget too small to judge
 // ---------------------------------------------------------------------------------------
 
 /// **A chi-square without degrees of freedom** (a budget so small that every bin expects
@@ -949,6 +949,10 @@ fn chi_square_without_degrees_of_freedom_fails_with_a_nan_p_value() {
     assert!(sampling.figure.is_nan(), "{sampling}");
     assert!(sampling.to_string().contains("p = NaN"), "{sampling}");
 }
+
+// ---------------------------------------------------------------------------------------
+// The correct counterparts
+// ---------------------------------------------------------------------------------------
 
 /// Every model and distribution of the corpus without its bug passes every law, under the
 /// same budgets: the failures above are the bugs', not the harness's.

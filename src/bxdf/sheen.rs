@@ -2,7 +2,7 @@
 
 use super::{At, BxdfSample, Lobes, Prepare, both_above, pdf_cosine, sample_cosine};
 use crate::math::{exp, powf, safe_sqrt, sqrt};
-use crate::microfacet::{catmull_rom, lambda_from_g1, projected_area};
+use crate::microfacet::{catmull_rom, projected_area};
 use crate::param::{ParamError, unit_interval};
 use crate::spectrum::Spectrum;
 use core::f32::consts::PI;
@@ -14,7 +14,7 @@ const TABLE: usize = 32;
 /// albedo at construction.
 const T_PANELS: usize = 6;
 const PHI_PANELS: usize = 4;
-/// Nodes of the exact Smith `G1` table, over `√(cos θ) ∈ [0, 1]`.
+/// Nodes of the exact-Smith projected-area table, over `√(1 − √(cos θ)) ∈ [0, 1]`.
 const SMITH: usize = 128;
 /// The smallest accepted roughness.
 const R_MIN: f32 = 0.01;
@@ -50,24 +50,25 @@ const FIT_1: [f32; 5] = [21.5473, 3.82987, 0.19823, -1.97760, -4.32054];
 /// **Albedo.** The directional albedo `E(μo) = ∫ f cos θi dωi` (with `c = 1`) is tabulated
 /// at construction (32 angles, evenly spaced in `√μo`, each integrated by Gauss-Legendre
 /// rules: about 50 000 evaluations of `D`, 0.43 ms in a release build by
-/// `cargo bench --bench combinators`) and returned by [`albedo`](Self::albedo), so that a
+/// `cargo bench --bench combinators` on 2026-11-23, 0.91 ms on the machine of 2026-11-27)
+/// and returned by [`albedo`](Self::albedo), so that a
 /// renderer can layer the sheen over a base energy-consistently, as OpenPBR and Imageworks
 /// do: `f_sheen + (1 − c E(μo)) f_base`. The table's values (white, `c = 1`; checked against
 /// 100 000-sample Monte Carlo at each angle by `tests/bxdf_sheen.rs`): the albedo is small
 /// head-on and grows toward grazing — at `θo = 0°, 60°, 80°, 89°`: 0.164, 0.356, 0.614, 0.922
 /// (`r = 1`); 0.087, 0.281, 0.546, 0.856 (`r = 0.5`); 0.002, 0.096, 0.388, 0.847 (`r = 0.1`);
 /// and for smoother sheens it exceeds 1 at grazing (1.18 at 89° for `r = 0.03`, 1.69 for
-/// `r = 0.01`). That gain is the fitted `Λ`'s: it is not the exact Smith `Λ` of this `D`.
+/// `r = 0.01`; nearer grazing up to 1.33 and 2.10). That gain is the fitted `Λ`'s: it is not the exact Smith `Λ` of this `D`.
 /// For `r ≥ 0.1` the projected-area identity `∫ G1 ⟨w, m⟩ D dm = cos θ` holds within 5%
 /// up to 80° (`tests/bxdf_sheen.rs`; right at grazing the fit drifts further, −9.5% at
 /// 89.9° for `r = 1`), but below it the fit overestimates the projected area badly, at 60°
 /// by +12% (`r = 0.06`), +41% (`r = 0.03`) and +120% (`r = 0.01`), so that `G` masks too
 /// little. With the exact `Λ` ([`with_exact_smith`](Self::with_exact_smith), the identity then
-/// within 3e-5 at every `r` up to 89°) the albedo stays below 1 at every `r`, Fresnel factor
+/// within 1e-5 from 0° to 89° at `r` from 0.01 to 1) the albedo stays below 1 at every `r`, Fresnel factor
 /// or not: at `θo = 60°, 80°, 89°` 0.000, 0.080, 0.689 (`r = 0.01`; an independent `f64`
 /// quadrature gave 0.69 at 89°), 0.014, 0.213, 0.785 (`r = 0.03`), 0.096, 0.391, 0.857
-/// (`r = 0.1`), 0.359, 0.617, 0.918 (`r = 1`), and at most 0.985 to 0.997 at the table's
-/// grazing end. The table
+/// (`r = 0.1`), 0.359, 0.617, 0.918 (`r = 1`), and 0.995 to 0.999 at the table's grazing
+/// end (`μo = 1e-4`, from `r = 0.01` to 1). The table
 /// matches Monte Carlo within 1.2% plus the estimate's k standard errors over `θo ≤ 89°` (the
 /// largest gap measured, 0.9%, is at `r = 0.01`, `θo = 89°`, where the estimate's standard
 /// error is 1.8%).
@@ -79,10 +80,11 @@ const FIT_1: [f32; 5] = [21.5473, 3.82987, 0.19823, -1.97760, -4.32054];
 /// masking, energy conserving at every `r` (measured at `r = 0.01` and `0.03`).
 ///
 /// **Cost.** The exact masking costs 1.1 ms more construction (126 projected-area integrals,
-/// then the albedo table again: 2.03 ms against 0.91 for `new` alone, one run of
-/// `cargo bench --bench combinators`, 2026-11-27); each `Λ` is then a square root, a cubic
-/// and a division, cheaper than the fit's powers, division and exponential: at `r = 0.5`
-/// `eval` 26.7 ns against 35.8 and `sample` 35.0 against 50.1 in the same run.
+/// then the albedo table again: 2.03 ms against 0.91 for `new` alone, medians of three runs
+/// of `cargo bench --bench combinators`, 2026-11-27); each `Λ` is then two square roots, a
+/// cubic and a division, cheaper than the fit's powers, division and exponential: at
+/// `r = 0.5` `eval` 30.3 ns against 35.4 and `sample` 37.8 against 49.1 in the same runs.
+/// The option's field makes every `Sheen` 130 floats larger (about 690 bytes in all).
 ///
 /// ```
 /// use lobe::bxdf::{Bxdf, Sheen};
@@ -107,8 +109,9 @@ pub struct Sheen<S = f32> {
     fit: [f32; 5],
     /// `E(μ)` at `√μ = i / (TABLE − 1)`, for `c = 1`.
     albedo: [f32; TABLE],
-    /// The exact Smith `G1` of `D` at `√μ = i / (SMITH − 1)`, between one extrapolated value
-    /// before and one after, in place of the fit ([`with_exact_smith`](Self::with_exact_smith)).
+    /// The projected area `A(μ) = μ / G1(μ)` at `√(1 − √μ) = j / (SMITH − 1)`, between one
+    /// padding value at each end: the exact Smith masking, in place of the fit
+    /// ([`with_exact_smith`](Self::with_exact_smith)).
     smith: Option<[f32; SMITH + 2]>,
 }
 
@@ -142,32 +145,37 @@ impl<S: Spectrum> Sheen<S> {
     }
 
     /// The same sheen with the exact Smith masking of its `D` in place of Estevez & Kulla's
-    /// fitted `Λ`, and the albedo table integrated again with it: `G1(μ) = μ / ∫ max(0, w·m)
-    /// D(m) dωm` (the projected-area identity, Heitz 2014, eq. 14, which determines the Smith
-    /// masking function uniquely; integrated as for [`Gtr`](crate::microfacet::Gtr)'s masking)
-    /// at 128 values of `√μ` evenly spaced in `[0, 1]`, interpolated by a Catmull-Rom cubic.
-    /// `G1` is even in `√μ` at grazing (it vanishes like `μ`) and smooth to the normal, where it
-    /// is 1. It conserves energy at every roughness, where the fit gains up to 69% at grazing
-    /// for `r = 0.01` (see the type's docs).
+    /// fitted `Λ`, and the albedo table integrated again with it. The projected area
+    /// `A(μ) = ∫ max(0, w·m) D(m) dωm` determines the Smith masking uniquely: `G1 = μ / A`,
+    /// `Λ = A/μ − 1` (Heitz 2014, eq. 14). It is integrated as for
+    /// [`Gtr`](crate::microfacet::Gtr)'s masking at 128 values of `s = √(1 − √μ)` evenly
+    /// spaced in `[0, 1]` and interpolated by a Catmull-Rom cubic. `A` is smooth and positive
+    /// from grazing (`A(0) > 0`, where `G1 ∝ μ` has no relative accuracy to spare) to the
+    /// normal (`A(1) = 1`); `s ≈ θ/2` near the normal, where `A` changes over `θ ≈ √r` and is
+    /// even in `s` (the padding mirrors the second node), and `1 − s ≈ √μ/2` near grazing
+    /// (the padding is `A` continued past grazing: `μ = (1 − s²)²` is a polynomial in `s`).
+    /// It conserves energy at every roughness, where the fit gains 69% at 89° for `r = 0.01`
+    /// and up to 110% nearer grazing (see the type's docs).
     #[must_use]
     pub fn with_exact_smith(self) -> Self {
         let (scale, exponent) = (self.d_scale, self.inv_r);
         let d = move |_cos: f32, sin: f32| scale * powf(sin, exponent);
         // Near grazing D ≈ e^(−cos²θm / 2r) changes over cos θm ≈ √r.
         let width = 1.0 / sqrt(self.roughness);
-        let mut g1 = [0.0; SMITH + 2];
-        for i in 1..SMITH - 1 {
-            let mu = (i * i) as f32 / ((SMITH - 1) * (SMITH - 1)) as f32;
-            let sin = safe_sqrt((1.0 - mu) * (1.0 + mu));
-            g1[i + 1] = (mu / projected_area(&d, mu, sin, width)).min(1.0);
+        // Node j at s = j / (SMITH − 1) is area[j + 1]; j = SMITH is the padding past grazing.
+        let mut area = [0.0; SMITH + 2];
+        for j in 0..=SMITH {
+            // μ = (1 − s²)², and sin θ = s √((2 − s²)(1 + μ)) without the cancellation of
+            // 1 − μ² near the normal.
+            let s = j as f32 / (SMITH - 1) as f32;
+            let root = 1.0 - s * s;
+            let mu = root * root;
+            let sin = s * sqrt((2.0 - s * s) * (1.0 + mu));
+            area[j + 1] = projected_area(&d, mu, sin, width);
         }
-        // G1(0) = 0, G1(1) = 1 (D is normalised); even in √μ before the first node, a
-        // quadratic after the last.
-        g1[SMITH] = 1.0;
-        g1[0] = g1[2];
-        g1[SMITH + 1] = 3.0 * (g1[SMITH] - g1[SMITH - 1]) + g1[SMITH - 2];
+        area[0] = area[2];
         let mut sheen = Self {
-            smith: Some(g1),
+            smith: Some(area),
             ..self
         };
         sheen.tabulate_albedo();
@@ -202,9 +210,10 @@ impl<S: Spectrum> Sheen<S> {
     #[must_use]
     pub fn lambda(&self, cos_theta: f32) -> f32 {
         let mu = cos_theta.abs().min(1.0);
-        if let Some(g1) = &self.smith {
-            let g = catmull_rom(g1, sqrt(mu) * (SMITH - 1) as f32).clamp(0.0, 1.0);
-            return lambda_from_g1(g).min(f32::MAX);
+        if let Some(area) = &self.smith {
+            // Λ = A/μ − 1 ≥ 0 (G1 ≤ 1); +∞ at μ = 0, capped.
+            let a = catmull_rom(area, sqrt(1.0 - sqrt(mu)) * (SMITH - 1) as f32);
+            return (a / mu - 1.0).clamp(0.0, f32::MAX);
         }
         let l = if mu < 0.5 {
             self.l(mu)

@@ -35,7 +35,7 @@ pub use blinn_phong::BlinnPhongNdf;
 pub use ggx::Ggx;
 pub use gtr::Gtr;
 pub use masking::{Masking, v_cavity};
-pub(crate) use smith_table::{catmull_rom, lambda_from_g1, projected_area};
+pub(crate) use smith_table::{catmull_rom, projected_area};
 use widths::Widths;
 
 use glam::{Vec2, Vec3};
