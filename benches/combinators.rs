@@ -8,7 +8,7 @@
 //!   `CoatedConductor` (coat GGX `α = 0.1`, gold GGX `α = 0.3`) at the default sample count
 //!   (one walk per `eval` and `pdf`), and `CoatedDiffuse` with four walks, and with a
 //!   scattering layer; the construction of a `Sheen` (its albedo table; with the exact Smith
-//!   masking, its `G1` table too).
+//!   masking, its projected-area table too).
 //!
 //! ```sh
 //! cargo bench --bench combinators

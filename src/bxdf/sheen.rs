@@ -47,31 +47,29 @@ const FIT_1: [f32; 5] = [21.5473, 3.82987, 0.19823, -1.97760, -4.32054];
 ///
 /// Sampling: cosine-weighted directions (the lobe is wide; the paper samples uniformly).
 ///
-/// **Albedo.** The directional albedo `E(μo) = ∫ f cos θi dωi` (with `c = 1`) is tabulated
-/// at construction (32 angles, evenly spaced in `√μo`, each integrated by Gauss-Legendre
-/// rules: about 50 000 evaluations of `D`, 0.43 ms in a release build by
-/// `cargo bench --bench combinators` on 2026-11-23, 0.91 ms on the machine of 2026-11-27)
-/// and returned by [`albedo`](Self::albedo), so that a
-/// renderer can layer the sheen over a base energy-consistently, as OpenPBR and Imageworks
+/// **Albedo.** The directional albedo `E(μo) = ∫ f cos θi dωi` (with `c = 1`) is tabulated at
+/// construction (32 angles, evenly spaced in `√μo`, each integrated by Gauss-Legendre rules: about
+/// 50 000 evaluations of `D`, 0.43 ms in a release build by `cargo bench --bench combinators` on
+/// 2026-11-23, 0.91 ms on the machine of 2026-11-27) and returned by [`albedo`](Self::albedo), so
+/// that a renderer can layer the sheen over a base energy-consistently, as OpenPBR and Imageworks
 /// do: `f_sheen + (1 − c E(μo)) f_base`. The table's values (white, `c = 1`; checked against
-/// 100 000-sample Monte Carlo at each angle by `tests/bxdf_sheen.rs`): the albedo is small
-/// head-on and grows toward grazing — at `θo = 0°, 60°, 80°, 89°`: 0.164, 0.356, 0.614, 0.922
-/// (`r = 1`); 0.087, 0.281, 0.546, 0.856 (`r = 0.5`); 0.002, 0.096, 0.388, 0.847 (`r = 0.1`);
-/// and for smoother sheens it exceeds 1 at grazing (1.18 at 89° for `r = 0.03`, 1.69 for
-/// `r = 0.01`; nearer grazing up to 1.33 and 2.10). That gain is the fitted `Λ`'s: it is not the exact Smith `Λ` of this `D`.
-/// For `r ≥ 0.1` the projected-area identity `∫ G1 ⟨w, m⟩ D dm = cos θ` holds within 5%
-/// up to 80° (`tests/bxdf_sheen.rs`; right at grazing the fit drifts further, −9.5% at
-/// 89.9° for `r = 1`), but below it the fit overestimates the projected area badly, at 60°
-/// by +12% (`r = 0.06`), +41% (`r = 0.03`) and +120% (`r = 0.01`), so that `G` masks too
-/// little. With the exact `Λ` ([`with_exact_smith`](Self::with_exact_smith), the identity then
-/// within 1e-5 from 0° to 89° at `r` from 0.01 to 1) the albedo stays below 1 at every `r`, Fresnel factor
-/// or not: at `θo = 60°, 80°, 89°` 0.000, 0.080, 0.689 (`r = 0.01`; an independent `f64`
-/// quadrature gave 0.69 at 89°), 0.014, 0.213, 0.785 (`r = 0.03`), 0.096, 0.391, 0.857
-/// (`r = 0.1`), 0.359, 0.617, 0.918 (`r = 1`), and 0.995 to 0.999 at the table's grazing
-/// end (`μo = 1e-4`, from `r = 0.01` to 1). The table
-/// matches Monte Carlo within 1.2% plus the estimate's k standard errors over `θo ≤ 89°` (the
-/// largest gap measured, 0.9%, is at `r = 0.01`, `θo = 89°`, where the estimate's standard
-/// error is 1.8%).
+/// 100 000-sample Monte Carlo at each angle by `tests/bxdf_sheen.rs`): the albedo is small head-on
+/// and grows toward grazing — at `θo = 0°, 60°, 80°, 89°`: 0.164, 0.356, 0.614, 0.922 (`r = 1`);
+/// 0.087, 0.281, 0.546, 0.856 (`r = 0.5`); 0.002, 0.096, 0.388, 0.847 (`r = 0.1`); and for smoother
+/// sheens it exceeds 1 at grazing (1.18 at 89° for `r = 0.03`, 1.69 for `r = 0.01`; nearer grazing
+/// up to 1.33 and 2.10). That gain is the fitted `Λ`'s: it is not the exact Smith `Λ` of this `D`.
+/// For `r ≥ 0.1` the projected-area identity `∫ G1 ⟨w, m⟩ D dm = cos θ` holds within 5% up to 80°
+/// (`tests/bxdf_sheen.rs`; right at grazing the fit drifts further, −9.5% at 89.9° for `r = 1`),
+/// but below it the fit overestimates the projected area badly, at 60° by +12% (`r = 0.06`), +41%
+/// (`r = 0.03`) and +120% (`r = 0.01`), so that `G` masks too little. With the exact `Λ`
+/// ([`with_exact_smith`](Self::with_exact_smith), the identity then within 1e-5 from 0° to 89° at
+/// `r` from 0.01 to 1) the albedo stays below 1 at every `r`, Fresnel factor or not: at
+/// `θo = 60°, 80°, 89°` 0.000, 0.080, 0.689 (`r = 0.01`; an independent `f64` quadrature gave 0.69
+/// at 89°), 0.014, 0.213, 0.785 (`r = 0.03`), 0.096, 0.391, 0.857 (`r = 0.1`), 0.359, 0.617, 0.918
+/// (`r = 1`), and 0.995 to 0.999 (from `r = 0.01` to 1) as `μo → 0`, the table's first entry
+/// (integrated at `μo = 1e-4`). The table matches Monte Carlo within 1.2% plus the estimate's k
+/// standard errors over `θo ≤ 89°` (the largest gap measured, 0.9%, is at `r = 0.01`, `θo = 89°`,
+/// where the estimate's standard error is 1.8%).
 ///
 /// Laws: positive, reciprocal (`D` and `G` are symmetric, to round-off), sampler and pdf
 /// agree; energy conserving for `r ≥ 0.1` (the table's albedo peaks at grazing incidence,
@@ -79,8 +77,8 @@ const FIT_1: [f32; 5] = [21.5473, 3.82987, 0.19823, -1.97760, -4.32054];
 /// `r = 0.067`, where the peak passes 1 (1.04 for `r = 0.06`; above). With the exact Smith
 /// masking, energy conserving at every `r` (measured at `r = 0.01` and `0.03`).
 ///
-/// **Cost.** The exact masking costs 1.1 ms more construction (126 projected-area integrals,
-/// then the albedo table again: 2.03 ms against 0.91 for `new` alone, medians of three runs
+/// **Cost.** The exact masking costs 1.1 ms more construction (129 projected-area integrals,
+/// then the albedo table again: 2.02 ms against 0.90 for `new` alone, medians of three runs
 /// of `cargo bench --bench combinators`, 2026-11-27); each `Λ` is then two square roots, a
 /// cubic and a division, cheaper than the fit's powers, division and exponential: at
 /// `r = 0.5` `eval` 30.3 ns against 35.4 and `sample` 37.8 against 49.1 in the same runs.
