@@ -154,6 +154,17 @@ impl<S: Spectrum> Sheen<S> {
     /// (the padding is `A` continued past grazing: `μ = (1 − s²)²` is a polynomial in `s`).
     /// It conserves energy at every roughness, where the fit gains 69% at 89° for `r = 0.01`
     /// and up to 110% nearer grazing (see the type's docs).
+    ///
+    /// ```
+    /// use lobe::bxdf::Sheen;
+    /// let fitted = Sheen::new(1.0_f32, 0.01)?;
+    /// let exact = fitted.with_exact_smith();
+    /// assert!(exact.has_exact_smith() && !fitted.has_exact_smith());
+    /// // Seen 89° from the normal, the fitted sheen reflects 1.7× what it receives.
+    /// let grazing = 89.0_f32.to_radians().cos();
+    /// assert!(fitted.albedo(grazing) > 1.6 && exact.albedo(grazing) < 0.7);
+    /// # Ok::<(), lobe::ParamError>(())
+    /// ```
     #[must_use]
     pub fn with_exact_smith(self) -> Self {
         let (scale, exponent) = (self.d_scale, self.inv_r);
