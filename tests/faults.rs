@@ -928,7 +928,7 @@ fn chi_square_without_degrees_of_freedom_fails_with_a_nan_p_value() {
         chi2_samples: 100,
         ..config()
     };
-    let lambert = lobe::bxdf::Lambert::new(0.8_f32).unwrap();
+    let lambert = Lambert::new(0.8_f32).unwrap();
     let report = check_bxdf("Lambert ρ=0.8, 100 χ² samples", &lambert, &starved);
     assert_caught(&report, &[Law::Sampling]);
     let sampling = report.get(Law::Sampling).unwrap();

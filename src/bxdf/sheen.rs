@@ -167,8 +167,7 @@ impl<S: Spectrum> Sheen<S> {
     /// ```
     #[must_use]
     pub fn with_exact_smith(self) -> Self {
-        let (scale, exponent) = (self.d_scale, self.inv_r);
-        let d = move |_cos: f32, sin: f32| scale * powf(sin, exponent);
+        let d = |_cos: f32, sin: f32| self.d_sin2(sin * sin);
         // Near grazing D ≈ e^(−cos²θm / 2r) changes over cos θm ≈ √r.
         let width = 1.0 / sqrt(self.roughness);
         // Node j at s = j / (SMITH − 1) is area[j + 1]; j = SMITH is the padding past grazing.
