@@ -208,6 +208,21 @@ fn weight<S: Spectrum>(s: &BxdfSample<S>) -> S {
     s.f * (s.wi.z.abs() / s.pdf)
 }
 
+/// How far, in squared length, a base's delta reflection may fall from the exact mirror image
+/// and still count as one (the crate's mirrors compute it exactly).
+const RETRACE_TOLERANCE: f32 = 1e-12;
+
+/// Whether the base's sample `s`, for light travelling down along `down`, is a delta
+/// reflection back up along the mirror image `(dx, dy, −dz)`: the bounce through which a
+/// connection under a smooth top reaches the exit (every delta reflection of the crate's
+/// models is one; a base whose delta lobe sends light elsewhere is not followed there, by
+/// `eval`, `pdf` and `sample` alike).
+#[inline(always)]
+fn retraces<S: Spectrum>(down: Vec3, s: &BxdfSample<S>) -> bool {
+    let mirror = Vec3::new(down.x, down.y, -down.z);
+    s.is_specular() && (s.wi - mirror).length_squared() <= RETRACE_TOLERANCE
+}
+
 /// The kinds (diffuse, glossy, specular) of a set of lobes.
 #[inline(always)]
 fn kinds(l: Lobes) -> Lobes {
@@ -399,6 +414,121 @@ impl<T: LayerInterface, B: Bxdf> Layered<T, B> {
         (t * wi.z.abs() / (e * e * w_star.z.abs())).max(0.0)
     }
 
+    /// True when connections go through delta chains: a smooth top over a base with a delta
+    /// reflection lobe.
+    #[inline(always)]
+    fn chains(&self) -> bool {
+        self.smooth_top() && self.bottom.lobes().contains(Lobes::SPECULAR_REFLECTION)
+    }
+
+    /// How many round trips (the top's internal reflection, then the base's delta reflection)
+    /// a path may add before it leaves through the top at event `exit` and stay within the
+    /// depth: each adds two events.
+    #[inline(always)]
+    fn round_trips(&self, exit: u32) -> u32 {
+        self.max_depth.saturating_sub(exit + 1) / 2
+    }
+
+    /// The base's delta reflection of the light travelling down along `down` back up along
+    /// its mirror image, drawn with the base's own sampler: the sample's weight when it is
+    /// that reflection ([`retraces`]), `None` when the sampler chose anything else.
+    fn base_mirror(&self, down: Vec3, rng: &mut WalkRng) -> Option<B::Spectrum> {
+        let (u, uc) = (rng.next_vec2(), rng.next_f32());
+        let s = self.bottom.sample(-down, u, uc).filter(usable)?;
+        retraces(down, &s).then(|| weight(&s))
+    }
+
+    /// The delta chains that light going up along `up` (the internal direction that refracts
+    /// into `wi`) follows to the exit under a smooth top: straight out, or reflected by the
+    /// top's underside (`F`), the layer crossed down and up again, reflected by the base's
+    /// delta lobe back along `up` ([`base_mirror`](Self::base_mirror)), and so on, at most
+    /// `trips` times. Returns the sum over the chains of their weights (`1` for straight
+    /// out, then products of `F Tr² ρ`, the base's reflectance `ρ` drawn by its sampler) and
+    /// of their probabilities under the sampler's walk (`F`, the chance of crossing the layer
+    /// twice without scattering, and the base's chance of choosing that reflection, drawn
+    /// alike): the factors by which a connection's weight and density grow when the chains
+    /// are counted. One draw of the base per round trip serves both sums: each is unbiased.
+    fn delta_chains(&self, up: Vec3, trips: u32, rng: &mut WalkRng) -> (B::Spectrum, f32) {
+        let (mut w_sum, mut p_sum) = (B::Spectrum::one(), 1.0);
+        let f = dielectric(-up.z, self.top.eta());
+        if !(f > 0.0) {
+            return (w_sum, p_sum);
+        }
+        let down = Vec3::new(up.x, up.y, -up.z);
+        let (t, reach) = (tr(self.thickness, up), self.reach_top(0.0, up));
+        let (mut w, mut p) = (B::Spectrum::one(), 1.0);
+        for _ in 0..trips {
+            let Some(rho) = self.base_mirror(down, rng) else {
+                break;
+            };
+            w = w * rho * (f * t * t);
+            p *= f * reach * reach;
+            w_sum += w;
+            p_sum += p;
+        }
+        (w_sum, p_sum)
+    }
+
+    /// What a scattering in the medium at height `z` (event `depth`, light arriving from
+    /// `from`) sends to the exit under a smooth top with a delta base, per unit throughput
+    /// and albedo: up along `up` and through the [`delta_chains`](Self::delta_chains) (`direct`
+    /// is the straight connection's weight: phase function, transmittance to the top, exit),
+    /// and down along `up`'s mirror image to the base's delta reflection, which sends it up
+    /// along `up` and through the chains (`exit` is the top's weight for leaving along `up`).
+    /// [`eval_chains`](Self::eval_chains)' density: the sampler's density of leaving toward
+    /// `wi` from a scattering at height `z` through the delta chains, up along `ws` (`direct`:
+    /// the straight connection's density) and down to the base's delta reflection first.
+    #[allow(clippy::too_many_arguments)]
+    fn pdf_chains(
+        &self,
+        depth: u32,
+        z: f32,
+        from: Vec3,
+        ws: Vec3,
+        direct: f32,
+        wi: Vec3,
+        rng: &mut WalkRng,
+    ) -> f32 {
+        let mut density = direct * self.delta_chains(ws, self.round_trips(depth + 1), rng).1;
+        let down = Vec3::new(ws.x, ws.y, -ws.z);
+        let p = self.phase.eval(from, down);
+        if depth + 2 < self.max_depth && p > 0.0 && self.base_mirror(down, rng).is_some() {
+            let chains = self.delta_chains(ws, self.round_trips(depth + 2), rng).1;
+            // The walk scatters only inside the layer: a medium, so `Tr` is the chance of
+            // crossing down to the base, and `reach_top` the chance of crossing back.
+            density += p
+                * tr(z, down)
+                * self.reach_top(0.0, ws)
+                * self.smooth_exit_density(ws, wi)
+                * chains;
+        }
+        density
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn eval_chains(
+        &self,
+        depth: u32,
+        z: f32,
+        from: Vec3,
+        up: Vec3,
+        direct: f32,
+        exit: f32,
+        rng: &mut WalkRng,
+    ) -> B::Spectrum {
+        let mut f = self.delta_chains(up, self.round_trips(depth + 1), rng).0 * direct;
+        let down = Vec3::new(up.x, up.y, -up.z);
+        let p = self.phase.eval(from, down);
+        if depth + 2 < self.max_depth && p > 0.0 {
+            if let Some(rho) = self.base_mirror(down, rng) {
+                let chains = self.delta_chains(up, self.round_trips(depth + 2), rng).0;
+                let path = p * tr(z, down) * tr(self.thickness, up) * exit;
+                f += rho * chains * path;
+            }
+        }
+        f
+    }
+
     /// One walk of `sample` from `wo` (prepared in `at`): pbrt-v4's `Sample_f` without its
     /// Russian roulette. Returns the direction that leaves, the path's weight (the product of
     /// `f |cos| / pdf` along it), its density (the product of the densities, in `f64` so that
@@ -432,14 +562,14 @@ impl<T: LayerInterface, B: Bxdf> Layered<T, B> {
         let mut pdf = f64::from(s0.pdf);
         let mut specular = s0.is_specular();
         let mut glossy = s0.lobe.intersects(Lobes::GLOSSY);
-        // Under a smooth top, `eval` and `pdf` reach the exit only from the last non-delta
-        // event, straight through the top: a path with a delta bounce between that event and
-        // the exit (a mirror in the base, or the top's internal reflection onto one) is one
-        // they cannot count, so the sampler drops it too (pbrt-v4's `LayeredBxDF` loses the
-        // same paths in its `f` and `PDF`; a sampler that kept them weighed 38% more light
-        // than `eval` for a smooth coat over a mirror with a scattering layer).
+        // Under a smooth top, `eval` and `pdf` reach the exit from the last non-delta event
+        // straight through the top or through delta chains ([`delta_chains`]): round trips of
+        // the top's internal reflection and a base's delta reflection back along the same
+        // direction. A path whose delta bounces since that event include one of the base's
+        // that goes elsewhere ([`retraces`]) is one they cannot count, so the sampler drops
+        // it too.
         let smooth_top = self.smooth_top();
-        let (mut scattered, mut delta_since) = (false, false);
+        let (mut scattered, mut retraced) = (false, true);
         let mut walk = Walk {
             z: self.thickness,
             w: s0.wi,
@@ -457,7 +587,7 @@ impl<T: LayerInterface, B: Bxdf> Layered<T, B> {
                 beta = beta * self.albedo;
                 pdf *= f64::from(ps.pdf);
                 specular = false;
-                (scattered, delta_since) = (true, false);
+                (scattered, retraced) = (true, true);
                 walk.w = ps.wi;
                 continue;
             }
@@ -472,6 +602,9 @@ impl<T: LayerInterface, B: Bxdf> Layered<T, B> {
                     // Through the base: the light leaves the stack.
                     return None;
                 }
+                if s.is_specular() && !retraces(walk.w, &s) {
+                    retraced = false;
+                }
                 (s.wi, weight(&s), s.pdf, s.lobe)
             };
             beta = beta * w;
@@ -480,7 +613,7 @@ impl<T: LayerInterface, B: Bxdf> Layered<T, B> {
             glossy |= lobe.intersects(Lobes::GLOSSY);
             if walk.at_top && wi.z > 0.0 {
                 // Out through the top.
-                if smooth_top && scattered && delta_since {
+                if smooth_top && scattered && !retraced {
                     return None;
                 }
                 let kind = if specular {
@@ -492,10 +625,8 @@ impl<T: LayerInterface, B: Bxdf> Layered<T, B> {
                 };
                 return Some((wi, beta, pdf, Lobes::REFLECTION | kind));
             }
-            if lobe.is_specular() {
-                delta_since = scattered;
-            } else {
-                (scattered, delta_since) = (true, false);
+            if !lobe.is_specular() {
+                (scattered, retraced) = (true, true);
             }
             walk.w = wi;
         }
@@ -523,6 +654,7 @@ impl<T: LayerInterface, B: Bxdf> Layered<T, B> {
             .sample(wi, u, uc)
             .filter(|s| usable(s) && s.wi.z < 0.0);
         let smooth_top = self.smooth_top();
+        let chains = self.chains();
         let specular_bottom = !self.bottom.lobes().is_non_specular();
         let mut beta = B::Spectrum::splat(weight(&wos));
         let mut walk = Walk {
@@ -556,7 +688,14 @@ impl<T: LayerInterface, B: Bxdf> Layered<T, B> {
                     } else {
                         power_heuristic(1.0, wis.pdf, 1.0, p)
                     };
-                    f += beta * self.albedo * (p * wt * self.to_top(z, to) * wis.f / wis.pdf);
+                    let up = p * wt * self.to_top(z, to) * wis.f / wis.pdf;
+                    if chains {
+                        f += self.eval_chains(depth, z, -walk.w, to, up, wis.f / wis.pdf, rng)
+                            * beta
+                            * self.albedo;
+                    } else {
+                        f += beta * self.albedo * up;
+                    }
                 }
                 let ps = self.phase.sample(-walk.w, rng.next_vec2());
                 if !(ps.pdf > 0.0 && ps.wi.z != 0.0) {
@@ -597,7 +736,12 @@ impl<T: LayerInterface, B: Bxdf> Layered<T, B> {
                         power_heuristic(1.0, wis.pdf, 1.0, pb)
                     };
                     let scale = to.z.abs() * wt * self.to_top(0.0, to) * wis.f / wis.pdf;
-                    f += beta * fb * scale;
+                    if chains && !fb.is_black() {
+                        let trips = self.round_trips(depth + 1);
+                        f += beta * fb * scale * self.delta_chains(to, trips, rng).0;
+                    } else {
+                        f += beta * fb * scale;
+                    }
                 }
                 let (u, uc) = (rng.next_vec2(), rng.next_f32());
                 let bs = match self.bottom.sample(wo_b, u, uc) {
@@ -634,6 +778,7 @@ impl<T: LayerInterface, B: Bxdf> Layered<T, B> {
     /// into `wi`.
     fn pdf_walk(&self, at: &At<T::Prepared>, wi: Vec3, rng: &mut WalkRng) -> f32 {
         let smooth_top = self.smooth_top();
+        let chains = self.chains();
         // The entry. A smooth top transmits toward the refracted direction with probability
         // 1 − F(wo): the walk takes that branch and weighs its density by the probability
         // (the expectation over the top's choice), rather than drawing the choice and counting
@@ -693,9 +838,14 @@ impl<T: LayerInterface, B: Bxdf> Layered<T, B> {
                 let z = walk.z;
                 if exit_ok {
                     if let Some(ws) = w_star {
-                        density += self.phase.eval(-walk.w, ws)
+                        let direct = self.phase.eval(-walk.w, ws)
                             * self.reach_top(z, ws)
                             * self.smooth_exit_density(ws, wi);
+                        density += if chains {
+                            self.pdf_chains(depth, z, -walk.w, ws, direct, wi, rng)
+                        } else {
+                            direct
+                        };
                     }
                     if let Some((s, p_exit)) = wis {
                         let to = -s.wi;
@@ -731,9 +881,14 @@ impl<T: LayerInterface, B: Bxdf> Layered<T, B> {
                 let wo_b = -walk.w;
                 if exit_ok {
                     if let Some(ws) = w_star {
-                        density += self.bottom.pdf(wo_b, ws)
+                        let direct = self.bottom.pdf(wo_b, ws)
                             * self.reach_top(0.0, ws)
                             * self.smooth_exit_density(ws, wi);
+                        density += if chains && direct > 0.0 {
+                            direct * self.delta_chains(ws, self.round_trips(depth + 1), rng).1
+                        } else {
+                            direct
+                        };
                     }
                     if let Some((s, p_exit)) = wis {
                         let to = -s.wi;
