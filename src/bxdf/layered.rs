@@ -519,12 +519,13 @@ impl<T: LayerInterface, B: Bxdf> Layered<T, B> {
         let mut f = self.delta_chains(up, self.round_trips(depth + 1), rng).0 * direct;
         let down = Vec3::new(up.x, up.y, -up.z);
         let p = self.phase.eval(from, down);
-        if depth + 2 < self.max_depth && p > 0.0 {
-            if let Some(rho) = self.base_mirror(down, rng) {
-                let chains = self.delta_chains(up, self.round_trips(depth + 2), rng).0;
-                let path = p * tr(z, down) * tr(self.thickness, up) * exit;
-                f += rho * chains * path;
-            }
+        if depth + 2 < self.max_depth
+            && p > 0.0
+            && let Some(rho) = self.base_mirror(down, rng)
+        {
+            let chains = self.delta_chains(up, self.round_trips(depth + 2), rng).0;
+            let path = p * tr(z, down) * tr(self.thickness, up) * exit;
+            f += rho * chains * path;
         }
         f
     }
