@@ -79,17 +79,23 @@ const TAG_SAMPLE: u64 = 0x7361_6d70;
 /// would be zero whenever the top reflected, and a sample's `pdf` must be positive). Walks
 /// stop after `max_depth` events; `eval` and `pdf` count the same paths as `sample`.
 ///
-/// **A smooth top over a base with a delta lobe** (a mirror, a `Mix` with one, a `Glazed`)
-/// loses light: `eval` and `pdf` reach the exit under a smooth top only from the last
-/// non-delta event, straight through the top, so a path with a delta bounce between that event
-/// and the exit — a diffuse bounce, then the base's mirror, then out — is one no estimate of
-/// theirs can count (only a connection through the whole delta chain could), and `sample`
-/// drops it too, so that the three describe one BSDF (pbrt-v4's `LayeredBxDF` has the same
-/// limit in its `f` and `PDF`, and keeps those paths in its sampler). With a rough top, or a
-/// base without delta lobes, nothing is lost. How much: a smooth coat (η 1.5) over
-/// `Mix(Mirror, Lambert 0.8)` reflects 0.267 at normal incidence where the full walk carries
-/// 0.278 (4% lost); over a mirror under a scattering layer (albedo 0.9, thickness 0.5), 0.227
-/// at 45° for 0.366 (38%). `tests/bxdf_layered.rs` checks both against every law.
+/// **A smooth top over a base with a delta lobe** (a mirror, a `Mix` with one, a `Glazed`):
+/// under a smooth top, the exit toward `wi` is reached along one internal direction `d`, so
+/// `eval` and `pdf` connect each non-delta event to it; between that event and the exit the
+/// light may also make round trips — reflected down by the top's underside, back up along `d`
+/// by the base's mirror — and, from a scattering in the medium, go down to the mirror first.
+/// The connections count these delta chains too, as a sum over the number of round trips
+/// (within `max_depth`), the base's delta reflectance drawn by its own sampler at each trip
+/// (one draw serves the weight and the density). A delta bounce of the base that sends the
+/// light anywhere but back along the mirror image of its arrival (none of the crate's models
+/// does) cannot be connected to: `eval` and `pdf` leave it out and `sample` drops those
+/// paths, so that the three describe one BSDF. Before the chains (and in pbrt-v4's
+/// `LayeredBxDF`, whose `f` and `PDF` stop at the last non-delta event) this light was lost:
+/// 4% of a smooth coat (η 1.5) over `Mix(Mirror, Lambert 0.8)` at normal incidence (0.267
+/// where 0.278 leaves), 38% over a mirror under a scattering layer (albedo 0.9, thickness 0.5;
+/// 0.227 for 0.366 at 45°). `tests/layered_reference.rs` compares both, by the model's
+/// sampler and by its `eval`, with a walk that follows every bounce; `tests/bxdf_layered.rs`
+/// checks them against every law.
 ///
 /// **Determinism and variance.** Each estimate draws from a PCG32 generator seeded with a
 /// hash of its arguments, so `eval(wo, wi)` repeats itself exactly (a reciprocity pair is
@@ -776,7 +782,8 @@ impl<T: LayerInterface, B: Bxdf> Layered<T, B> {
     /// that follows), and the segment sampled from `wi` through the top (the event's density
     /// of it, the chance of reaching the top, the top's density, over the sampling density).
     /// A smooth top adds, at each such event, the density of the one direction that refracts
-    /// into `wi`.
+    /// into `wi`, and over a base with a delta lobe that of the delta chains that end in it
+    /// ([`delta_chains`](Self::delta_chains), [`pdf_chains`](Self::pdf_chains)).
     fn pdf_walk(&self, at: &At<T::Prepared>, wi: Vec3, rng: &mut WalkRng) -> f32 {
         let smooth_top = self.smooth_top();
         let chains = self.chains();
