@@ -519,14 +519,14 @@ fn parameters_are_validated() {
     assert_eq!(*imp.top(), rd);
 }
 
-/// A smooth coat over a base with a delta lobe: `eval` and `pdf` cannot count a path with a
-/// delta bounce between its last non-delta event and the exit, and `sample` drops those
-/// paths too, so that every law holds in expectation — the sampled weight against `eval` in
-/// particular, which failed when the sampler kept them (`Mix(Mirror, Lambert)` at 45°: the
-/// sampled albedo 0.2770 ± 0.0005 against `eval`'s 0.2657 ± 0.0005; a mirror under a
-/// scattering layer: 0.366 against 0.227).
+/// A smooth coat over a base with a delta lobe: `eval` and `pdf` connect through the delta
+/// chains (the top's internal reflection and the base's mirror) the paths that `sample` walks
+/// bounce by bounce, so every law holds in expectation — the sampled weight against `eval` in
+/// particular. (Before the chains, a sampler that kept those paths failed it: `Mix(Mirror,
+/// Lambert)` at 45°, the sampled albedo 0.2770 ± 0.0005 against `eval`'s 0.2657 ± 0.0005;
+/// `tests/layered_reference.rs` checks the light against an independent walk.)
 #[test]
-fn a_smooth_coat_over_a_delta_base_loses_what_eval_cannot_count() {
+fn a_smooth_coat_over_a_delta_base_obeys_every_law() {
     use lobe::bxdf::Mirror;
     use lobe::fresnel::NoFresnel;
     let c = config();
