@@ -7,7 +7,8 @@
 //! * `eval`, `pdf` and `sample` of `CoatedDiffuse` (GGX `α = 0.3`, `η = 1.5`) and
 //!   `CoatedConductor` (coat GGX `α = 0.1`, gold GGX `α = 0.3`) at the default sample count
 //!   (one walk per `eval` and `pdf`), and `CoatedDiffuse` with four walks, and with a
-//!   scattering layer; the construction of a `Sheen` (its albedo table; with the exact Smith
+//!   scattering layer; a smooth coat over `Mix(Mirror, Lambert)` and over a mirror under a
+//!   scattering layer (the walks' delta chains); the construction of a `Sheen` (its albedo table; with the exact Smith
 //!   masking, its projected-area table too).
 //!
 //! ```sh
@@ -26,9 +27,10 @@ mod passes;
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use inputs::{Inputs, N, inputs, two_sided};
 use lobe::bxdf::{
-    CoatedConductor, CoatedDiffuse, DiffuseTransmission, Lambert, Microfacet, Mix, Sheen, TwoSided,
+    CoatedConductor, CoatedDiffuse, DiffuseTransmission, Lambert, Layered, Microfacet, Mirror, Mix,
+    Sheen, SmoothDielectric, TwoSided,
 };
-use lobe::fresnel::Conductor;
+use lobe::fresnel::{Conductor, NoFresnel};
 use lobe::microfacet::{Ggx, Masking};
 use lobe::{Alpha, Eta, Vec3, metals};
 use passes::{group, model};
@@ -117,6 +119,25 @@ fn layered(c: &mut Criterion) {
             .with_thickness(0.5)
             .unwrap()
             .with_medium(Vec3::splat(0.8), 0.3)
+            .unwrap(),
+        &i,
+    );
+    // A smooth coat over a base with a delta lobe: the walks connect through delta chains.
+    let mirror = || Mirror::new(NoFresnel::<Vec3>::new());
+    let half_mirror = Mix::new(mirror(), Lambert::new(Vec3::splat(0.8)).unwrap(), 0.5).unwrap();
+    model(
+        c,
+        "Layered RGB smooth coat η 1.5 over Mix(Mirror, Lambert 0.8)",
+        &Layered::new(SmoothDielectric::new(glass), half_mirror),
+        &i,
+    );
+    model(
+        c,
+        "Layered RGB smooth coat η 1.5, scattering layer (0.5 mfp, albedo 0.9), mirror",
+        &Layered::new(SmoothDielectric::new(glass), mirror())
+            .with_thickness(0.5)
+            .unwrap()
+            .with_medium(Vec3::splat(0.9), 0.0)
             .unwrap(),
         &i,
     );
