@@ -1088,6 +1088,26 @@ fn push_compositions(c: &mut Configs) {
                 .unwrap(),
         );
     }
+    // Smooth coats over a base with a delta lobe, every index, a scattering layer: the walks
+    // connect through the delta chains, from the base's diffuse lobe and from the medium.
+    for e in ETAS {
+        let half_mirror = Mix::new(
+            Mirror::new(NoFresnel::<Vec3>::new()),
+            Lambert::new(rgb).unwrap(),
+            0.5,
+        )
+        .unwrap();
+        c.push(
+            "Layered<SmoothDielectric, Mix<Mirror, Lambert>>",
+            format!("η {e:e}, half mirror, ρ (1, 0.5, 0) RGB, 0.5 mfp, albedo 0.9"),
+            Some(eta(e)),
+            Layered::new(SmoothDielectric::new(eta(e)), half_mirror)
+                .with_thickness(0.5)
+                .unwrap()
+                .with_medium(Vec3::splat(0.9), 0.0)
+                .unwrap(),
+        );
+    }
     // The layer's ends: thick and scattering, forward and backward, walks of 1 and 256
     // events, several walks per estimate.
     let coated =
