@@ -264,6 +264,13 @@ fn models() -> Result<Vec<Entry>, ParamError> {
             "Smooth coat over Lambert ρ=1, no absorption (stochastic)",
             Layered::new(SmoothDielectric::new(glass), Lambert::new(1.0)?).with_thickness(0.0)?,
         ),
+        entry(
+            "Smooth coat η=1.5 over Mix(Mirror, Lambert ρ=0.8) (stochastic)",
+            Layered::new(
+                SmoothDielectric::new(glass),
+                Mix::new(Mirror::new(NoFresnel::new()), Lambert::new(0.8)?, 0.5)?,
+            ),
+        ),
     ])
 }
 
