@@ -473,6 +473,20 @@ fn composed_models_do_not_allocate() {
         let smooth = Layered::new(SmoothDielectric::new(e), Lambert::new(0.5f32).unwrap());
         assert_no_alloc("smooth coat", &smooth, &i);
         assert_seeded_no_alloc("smooth coat", &smooth, &i);
+        // Over a base with a delta lobe, with a scattering layer: the delta chains.
+        let half_mirror = Mix::new(
+            lobe::bxdf::Mirror::new(lobe::fresnel::NoFresnel::<f32>::new()),
+            Lambert::new(0.5f32).unwrap(),
+            0.5,
+        )
+        .unwrap();
+        let chains = Layered::new(SmoothDielectric::new(e), half_mirror)
+            .with_thickness(0.5)
+            .unwrap()
+            .with_medium(0.9, 0.0)
+            .unwrap();
+        assert_no_alloc("smooth coat over Mix(Mirror, Lambert)", &chains, &i);
+        assert_seeded_no_alloc("smooth coat over Mix(Mirror, Lambert)", &chains, &i);
         assert_no_alloc("TwoSided(CoatedDiffuse)", &TwoSided::new(coated), &i);
         let mix = Mix::new(coated, Lambert::new(rgb).unwrap(), 0.4).unwrap();
         assert_no_alloc("Mix(CoatedDiffuse, Lambert)", &mix, &i);
