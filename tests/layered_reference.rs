@@ -34,8 +34,9 @@ use lobe::verify::{Accumulator, Config, Estimate, Pcg32, albedo};
 use lobe::{Alpha, Eta, Vec3, metals};
 
 /// Comparisons in this file: 4 configurations × (2 albedo directions × 2 estimators + 3
-/// pairs), and 4 stacks with a delta base × 2 albedo directions × 3 estimators.
-const TESTS: usize = 4 * (2 * 2 + 3) + 4 * 2 * 3;
+/// pairs), and 6 stacks with a delta base × 2 viewer directions × (3 albedo estimators + the
+/// integral of `pdf`).
+const TESTS: usize = 4 * (2 * 2 + 3) + 6 * 2 * 4;
 
 /// What the reference needs of a stack.
 struct Stack<'a> {
@@ -157,14 +158,41 @@ fn walk(s: &Stack, wo: Vec3, wi: Option<Vec3>, rng: &mut Pcg32) -> (f64, f64, bo
 /// The reference albedo at `wo` from `n` walks, and on the same walks the albedo of the
 /// paths that met a lobe with a density (the model's lobes with a density).
 fn reference_albedo(s: &Stack, wo: Vec3, n: usize, seed: u64) -> (Estimate, Estimate) {
+    let (all, density, _) = reference_walks(s, wo, n, seed);
+    (all, density)
+}
+
+/// [`reference_albedo`]'s two estimates and, on the same walks, the probability that a walk
+/// leaves after meeting a lobe with a density (the integral of the model's `pdf`, which
+/// counts the sampler's directions from those lobes; a walk that leaves has a positive
+/// weight in the stacks this file builds).
+fn reference_walks(s: &Stack, wo: Vec3, n: usize, seed: u64) -> (Estimate, Estimate, Estimate) {
     let mut rng = Pcg32::new(seed, 11);
-    let (mut all, mut density) = (Accumulator::new(), Accumulator::new());
+    let (mut all, mut density, mut leaves) =
+        (Accumulator::new(), Accumulator::new(), Accumulator::new());
     for _ in 0..n {
         let (w, _, scattered) = walk(s, wo, None, &mut rng);
         all.push(w);
         density.push(if scattered { w } else { 0.0 });
+        leaves.push(if scattered && w > 0.0 { 1.0 } else { 0.0 });
     }
-    (all.finish(), density.finish())
+    (all.finish(), density.finish(), leaves.finish())
+}
+
+/// `∫ pdf(wo, wi) dωi` over the upper hemisphere by `n` cosine-distributed directions.
+fn pdf_integral(m: &dyn Bxdf<Spectrum = f32>, wo: Vec3, n: usize, seed: u64) -> Estimate {
+    let mut rng = Pcg32::new(seed, 13);
+    let mut acc = Accumulator::new();
+    for _ in 0..n {
+        let wi = lobe::sampling::cosine_hemisphere(rng.next_vec2());
+        let p = lobe::sampling::cosine_hemisphere_pdf(wi.z);
+        acc.push(if p > 0.0 {
+            f64::from(m.pdf(wo, wi) / p)
+        } else {
+            0.0
+        });
+    }
+    acc.finish()
 }
 
 /// The reference value `f(wo, wi)` from `n` walks.
@@ -316,7 +344,11 @@ fn a_short_walk_counts_the_same_paths() {
 /// density. Then a stack whose chains carry much of the light with a density (a coat of
 /// η 3, whose underside reflects 25% to 100% inside the escape cone, over a mirror) with
 /// walks short enough to cut the chains (`max_depth` 5 and 4): counting one round trip too
-/// many or too few where the depth ends fails it by 5.6 and 8.0 σ.
+/// many or too few where the depth ends fails it by 5.6 and 8.0 σ. Then the same coat over
+/// `Mix(Mirror, Lambert 0.8)`, whose base connects too, at `max_depth` 5 and 6: a round trip
+/// too many or too few in the base's connections fails it by 10 to 19 σ (`eval`'s and
+/// `pdf`'s alike). Every stack also checks `pdf`: its integral over the hemisphere against
+/// the share of the reference's walks that leave after a lobe with a density.
 #[test]
 fn a_smooth_coat_over_a_delta_base_matches_the_brute_force_walk() {
     let coat = || SmoothDielectric::new(Eta::new(1.5).unwrap());
@@ -350,6 +382,17 @@ fn a_smooth_coat_over_a_delta_base_matches_the_brute_force_walk() {
     let name = "smooth coat η 3, scattering layer (albedo 0.9, 0.3 mfp), mirror, max depth";
     compare_delta_base(&format!("{name} 5"), &dense(5), 2_000_000, 14);
     compare_delta_base(&format!("{name} 4"), &dense(4), 2_000_000, 16);
+    // And the base's own connections (the stacks above have none: a bare mirror) cut short.
+    // Both parities of the depth: a round trip too many or too few shows in one of them.
+    let short = |depth| {
+        let half_mirror = Mix::new(mirror(), Lambert::new(0.8_f32).unwrap(), 0.5).unwrap();
+        Layered::new(SmoothDielectric::new(Eta::new(3.0).unwrap()), half_mirror)
+            .with_max_depth(depth)
+            .unwrap()
+    };
+    let name = "smooth coat η 3 over Mix(Mirror, Lambert 0.8), max depth";
+    compare_delta_base(&format!("{name} 5"), &short(5), 2_000_000, 18);
+    compare_delta_base(&format!("{name} 6"), &short(6), 2_000_000, 20);
 }
 
 /// One stack of [`a_smooth_coat_over_a_delta_base_matches_the_brute_force_walk`] at two
@@ -364,7 +407,7 @@ where
     for (j, theta) in [20.0, 70.0].into_iter().enumerate() {
         let wo = common::dir(theta, 0.3);
         let seed = seed + j as u64;
-        let (all, density) = reference_albedo(&stack, wo, n, seed);
+        let (all, density, leaves) = reference_walks(&stack, wo, n, seed);
         let config = Config {
             albedo_samples: 200_000,
             seed,
@@ -379,5 +422,8 @@ where
         let part = format!("{what} sampled, lobes with a density");
         assert_agree(&part, sampled_part, density, k);
         assert_agree(&format!("{what} cosine (eval)"), cosine, density, k);
+        let pdf = pdf_integral(model, wo, 200_000, seed);
+        let what = format!("{name} θo={theta}°: ∫ pdf against the walks that leave");
+        assert_agree(&what, pdf, leaves, k);
     }
 }

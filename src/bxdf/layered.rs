@@ -85,8 +85,9 @@ const TAG_SAMPLE: u64 = 0x7361_6d70;
 /// light may also make round trips — reflected down by the top's underside, back up along `d`
 /// by the base's mirror — and, from a scattering in the medium, go down to the mirror first.
 /// The connections count these delta chains too, as a sum over the number of round trips
-/// (within `max_depth`), the base's delta reflectance drawn by its own sampler at each trip
-/// (one draw serves the weight and the density). A delta bounce of the base that sends the
+/// (within `max_depth`), each trip taken with the probability `F` that the top reflects and
+/// the base's delta reflectance drawn by its own sampler, as the sampler's walk would. A
+/// delta bounce of the base that sends the
 /// light anywhere but back along the mirror image of its arrival (none of the crate's models
 /// does) cannot be connected to: `eval` and `pdf` leave it out and `sample` drops those
 /// paths, so that the three describe one BSDF. Before the chains (and in pbrt-v4's
@@ -111,9 +112,12 @@ const TAG_SAMPLE: u64 = 0x7361_6d70;
 /// **Cost** (`benches/combinators.rs`, RGB, one walk): `eval` 0.47 µs, `pdf` 0.52 µs,
 /// `sample` 0.84 µs for the `CoatedDiffuse` above, 0.65, 0.64 and 1.1 µs for the
 /// `CoatedConductor`; `n` walks cost `n` times as much. The delta chains cost a smooth coat
-/// over `Mix(Mirror, Lambert)` 1.20×, 1.54× and 1.13× what its walks cost without them (0.15,
-/// 0.23 and 0.22 µs), over a mirror under a scattering layer 1.41×, 1.58× and 1.47× (the
-/// README's combinators section).
+/// (η 1.5) over `Mix(Mirror, Lambert)` 1.20×, 1.54× and 1.13× what its walks cost without
+/// them (0.15, 0.23 and 0.22 µs with them), over a mirror under a scattering layer 1.41×,
+/// 1.58× and 1.47× (the README's combinators section). A chain goes on with the probability
+/// `F` that the coat's underside reflects, whatever the path's weight: under a coat that
+/// reflects nearly everything from inside (η 1e3), a connection makes up to `max_depth / 2`
+/// round trips, and a walk costs up to `max_depth²/2` draws of the base.
 ///
 /// **Laws** (measured by `tests/bxdf_layered.rs` and `tests/layered_reference.rs`, in
 /// expectation: [`verify::check_bxdf`](crate::verify::check_bxdf) checks a
@@ -457,8 +461,8 @@ impl<T: LayerInterface, B: Bxdf> Layered<T, B> {
     /// base's chance of choosing that reflection): the factors by which a connection's
     /// weight and density grow when the chains are counted. Both are estimated as the
     /// sampler walks: each trip is taken with probability `F` (so `F` leaves the products)
-    /// and the base's reflection drawn by its sampler, one draw serving both sums; each sum
-    /// is unbiased. (Taking every trip and multiplying by `F` instead drew the base at every
+    /// and the base's reflection drawn by its sampler; each sum is unbiased (`eval` uses the
+    /// first, `pdf` the second). (Taking every trip and multiplying by `F` instead drew the base at every
     /// connection, where `F` is mostly a few percent: twice the cost for the same answer.)
     fn delta_chains(&self, up: Vec3, trips: u32, rng: &mut WalkRng) -> (B::Spectrum, f32) {
         let (mut w_sum, mut p_sum) = (B::Spectrum::one(), 1.0);
@@ -481,12 +485,6 @@ impl<T: LayerInterface, B: Bxdf> Layered<T, B> {
         (w_sum, p_sum)
     }
 
-    /// What a scattering in the medium at height `z` (event `depth`, light arriving from
-    /// `from`) sends to the exit under a smooth top with a delta base, per unit throughput
-    /// and albedo: up along `up` and through the [`delta_chains`](Self::delta_chains) (`direct`
-    /// is the straight connection's weight: phase function, transmittance to the top, exit),
-    /// and down along `up`'s mirror image to the base's delta reflection, which sends it up
-    /// along `up` and through the chains (`exit` is the top's weight for leaving along `up`).
     /// [`eval_chains`](Self::eval_chains)' density: the sampler's density of leaving toward
     /// `wi` from a scattering at height `z` through the delta chains, up along `ws` (`direct`:
     /// the straight connection's density) and down to the base's delta reflection first.
@@ -517,6 +515,12 @@ impl<T: LayerInterface, B: Bxdf> Layered<T, B> {
         density
     }
 
+    /// What a scattering in the medium at height `z` (event `depth`, light arriving from
+    /// `from`) sends to the exit under a smooth top with a delta base, per unit throughput
+    /// and albedo: up along `up` and through the [`delta_chains`](Self::delta_chains) (`direct`
+    /// is the straight connection's weight: phase function, transmittance to the top, exit),
+    /// and down along `up`'s mirror image to the base's delta reflection, which sends it up
+    /// along `up` and through the chains (`exit` is the top's weight for leaving along `up`).
     #[allow(clippy::too_many_arguments)]
     fn eval_chains(
         &self,
@@ -701,13 +705,14 @@ impl<T: LayerInterface, B: Bxdf> Layered<T, B> {
                     } else {
                         power_heuristic(1.0, wis.pdf, 1.0, p)
                     };
-                    let up = p * wt * self.to_top(z, to) * wis.f / wis.pdf;
+                    let direct = p * wt * self.to_top(z, to) * wis.f / wis.pdf;
                     if chains {
-                        f += self.eval_chains(depth, z, -walk.w, to, up, wis.f / wis.pdf, rng)
+                        let exit = wis.f / wis.pdf;
+                        f += self.eval_chains(depth, z, -walk.w, to, direct, exit, rng)
                             * beta
                             * self.albedo;
                     } else {
-                        f += beta * self.albedo * up;
+                        f += beta * self.albedo * direct;
                     }
                 }
                 let ps = self.phase.sample(-walk.w, rng.next_vec2());
