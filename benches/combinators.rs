@@ -8,8 +8,8 @@
 //!   `CoatedConductor` (coat GGX `α = 0.1`, gold GGX `α = 0.3`) at the default sample count
 //!   (one walk per `eval` and `pdf`), and `CoatedDiffuse` with four walks, and with a
 //!   scattering layer; a smooth coat over `Mix(Mirror, Lambert)` and over a mirror under a
-//!   scattering layer (the walks' delta chains); the construction of a `Sheen` (its albedo table; with the exact Smith
-//!   masking, its projected-area table too).
+//!   scattering layer (the walks' delta chains); the construction of a `Sheen` (its albedo
+//!   table; with the exact Smith masking, its projected-area table too).
 //!
 //! ```sh
 //! cargo bench --bench combinators
