@@ -87,10 +87,9 @@ const TAG_SAMPLE: u64 = 0x7361_6d70;
 /// The connections count these delta chains too, as a sum over the number of round trips
 /// (within `max_depth`), each trip taken with the probability `F` that the top reflects and
 /// the base's delta reflectance drawn by its own sampler, as the sampler's walk would. A
-/// delta bounce of the base that sends the
-/// light anywhere but back along the mirror image of its arrival (none of the crate's models
-/// does) cannot be connected to: `eval` and `pdf` leave it out and `sample` drops those
-/// paths, so that the three describe one BSDF. Before the chains (and in pbrt-v4's
+/// delta bounce of the base that sends the light anywhere but back along the mirror image of
+/// its arrival (none of the crate's models does) cannot be connected to: `eval` and `pdf`
+/// leave it out and `sample` drops those paths, so that the three describe one BSDF. Before the chains (and in pbrt-v4's
 /// `LayeredBxDF`, whose `f` and `PDF` stop at the last non-delta event) this light was lost:
 /// 4% of a smooth coat (η 1.5) over `Mix(Mirror, Lambert 0.8)` at normal incidence (0.267
 /// where 0.278 leaves), 38% over a mirror under a scattering layer (albedo 0.9, thickness 0.5;
@@ -234,6 +233,18 @@ const RETRACE_TOLERANCE: f32 = 1e-12;
 fn retraces<S: Spectrum>(down: Vec3, s: &BxdfSample<S>) -> bool {
     let mirror = Vec3::new(down.x, down.y, -down.z);
     s.is_specular() && (s.wi - mirror).length_squared() <= RETRACE_TOLERANCE
+}
+
+/// What the delta chains toward one exit need, the same for a whole walk: for the internal
+/// direction `up` that leaves toward `wi`, its mirror image `down`, the top's reflectance `f`
+/// from inside along `up`, the slab's transmittance `t` along it (a weight) and the chance
+/// `reach` of crossing the slab along it without scattering (a probability).
+#[derive(Clone, Copy)]
+struct ChainExit {
+    down: Vec3,
+    f: f32,
+    t: f32,
+    reach: f32,
 }
 
 /// The kinds (diffuse, glossy, specular) of a set of lobes.
@@ -451,10 +462,22 @@ impl<T: LayerInterface, B: Bxdf> Layered<T, B> {
         retraces(down, &s).then(|| weight(&s))
     }
 
-    /// The delta chains that light going up along `up` (the internal direction that refracts
-    /// into `wi`) follows to the exit under a smooth top: straight out, or reflected by the
-    /// top's underside (`F`), the layer crossed down and up again, reflected by the base's
-    /// delta lobe back along `up` ([`base_mirror`](Self::base_mirror)), and so on, at most
+    /// What [`delta_chains`](Self::delta_chains) needs toward the internal direction `up`,
+    /// computed once per walk.
+    fn chain_exit(&self, up: Vec3) -> ChainExit {
+        ChainExit {
+            down: Vec3::new(up.x, up.y, -up.z),
+            f: dielectric(-up.z, self.top.eta()),
+            t: tr(self.thickness, up),
+            reach: self.reach_top(0.0, up),
+        }
+    }
+
+    /// The delta chains of `c` ([`chain_exit`](Self::chain_exit)): those that light going up
+    /// along `up` (the internal direction that refracts into `wi`) follows to the exit under a
+    /// smooth top: straight out, or reflected by the top's underside (`F`), the layer crossed
+    /// down and up again, reflected by the base's delta lobe back along `up`
+    /// ([`base_mirror`](Self::base_mirror)), and so on, at most
     /// `trips` times. Returns the sum over the chains of their weights (`1` for straight
     /// out, then products of `F Tr² ρ`) and of their probabilities under the sampler's walk
     /// (products of `F`, the chance of crossing the layer twice without scattering and the
@@ -465,83 +488,76 @@ impl<T: LayerInterface, B: Bxdf> Layered<T, B> {
     /// first, `pdf` the second). Taking every trip and multiplying by `F` instead drew the
     /// base at every connection, where `F` is mostly a few percent: 1.5 to 2.2 times the cost
     /// of the walk without chains, for the same expectation.
-    fn delta_chains(&self, up: Vec3, trips: u32, rng: &mut WalkRng) -> (B::Spectrum, f32) {
+    fn delta_chains(&self, c: &ChainExit, trips: u32, rng: &mut WalkRng) -> (B::Spectrum, f32) {
         let (mut w_sum, mut p_sum) = (B::Spectrum::one(), 1.0);
-        let f = dielectric(-up.z, self.top.eta());
-        let down = Vec3::new(up.x, up.y, -up.z);
-        let (t, reach) = (tr(self.thickness, up), self.reach_top(0.0, up));
         let (mut w, mut p) = (B::Spectrum::one(), 1.0);
         for _ in 0..trips {
-            if !(rng.next_f32() < f) {
+            if !(rng.next_f32() < c.f) {
                 break;
             }
-            let Some(rho) = self.base_mirror(down, rng) else {
+            let Some(rho) = self.base_mirror(c.down, rng) else {
                 break;
             };
-            w = w * rho * (t * t);
-            p *= reach * reach;
+            w = w * rho * (c.t * c.t);
+            p *= c.reach * c.reach;
             w_sum += w;
             p_sum += p;
         }
         (w_sum, p_sum)
     }
 
-    /// [`eval_chains`](Self::eval_chains)' density: the sampler's density of leaving toward
-    /// `wi` from a scattering at height `z` through the delta chains, up along `ws` (`direct`:
-    /// the straight connection's density) and down to the base's delta reflection first.
+    /// [`eval_chains`](Self::eval_chains)' density: the sampler's density of leaving from a
+    /// scattering at height `z` through the delta chains of `c`, up along the exit's internal
+    /// direction (`direct`: the straight connection's density) and down to the base's delta
+    /// reflection first (`exit`: the density of leaving toward `wi` from that direction).
     #[allow(clippy::too_many_arguments)]
     fn pdf_chains(
         &self,
         depth: u32,
         z: f32,
         from: Vec3,
-        ws: Vec3,
+        c: &ChainExit,
         direct: f32,
-        wi: Vec3,
+        exit: f32,
         rng: &mut WalkRng,
     ) -> f32 {
-        let mut density = direct * self.delta_chains(ws, self.round_trips(depth + 1), rng).1;
-        let down = Vec3::new(ws.x, ws.y, -ws.z);
-        let p = self.phase.eval(from, down);
-        if depth + 2 < self.max_depth && p > 0.0 && self.base_mirror(down, rng).is_some() {
-            let chains = self.delta_chains(ws, self.round_trips(depth + 2), rng).1;
+        let mut density = direct * self.delta_chains(c, self.round_trips(depth + 1), rng).1;
+        let p = self.phase.eval(from, c.down);
+        if depth + 2 < self.max_depth && p > 0.0 && self.base_mirror(c.down, rng).is_some() {
+            let chains = self.delta_chains(c, self.round_trips(depth + 2), rng).1;
             // The walk scatters only inside the layer: a medium, so `Tr` is the chance of
-            // crossing down to the base, and `reach_top` the chance of crossing back.
-            density += p
-                * tr(z, down)
-                * self.reach_top(0.0, ws)
-                * self.smooth_exit_density(ws, wi)
-                * chains;
+            // crossing down to the base, and `c.reach` the chance of crossing back.
+            density += p * tr(z, c.down) * c.reach * exit * chains;
         }
         density
     }
 
     /// What a scattering in the medium at height `z` (event `depth`, light arriving from
     /// `from`) sends to the exit under a smooth top with a delta base, per unit throughput
-    /// and albedo: up along `up` and through the [`delta_chains`](Self::delta_chains) (`direct`
-    /// is the straight connection's weight: phase function, transmittance to the top, exit),
-    /// and down along `up`'s mirror image to the base's delta reflection, which sends it up
-    /// along `up` and through the chains (`exit` is the top's weight for leaving along `up`).
+    /// and albedo: up along the exit's internal direction and through the
+    /// [`delta_chains`](Self::delta_chains) of `c` (`direct` is the straight connection's
+    /// weight: phase function, transmittance to the top, exit), and down along `c.down` to the
+    /// base's delta reflection, which sends it up that direction and through the chains
+    /// (`exit` is the top's weight for leaving along it).
     #[allow(clippy::too_many_arguments)]
     fn eval_chains(
         &self,
         depth: u32,
         z: f32,
         from: Vec3,
-        up: Vec3,
+        c: &ChainExit,
         direct: f32,
         exit: f32,
         rng: &mut WalkRng,
     ) -> B::Spectrum {
-        let mut f = self.delta_chains(up, self.round_trips(depth + 1), rng).0 * direct;
-        let down = Vec3::new(up.x, up.y, -up.z);
-        let p = self.phase.eval(from, down);
+        let mut f = self.delta_chains(c, self.round_trips(depth + 1), rng).0 * direct;
+        let p = self.phase.eval(from, c.down);
         if depth + 2 < self.max_depth
             && p > 0.0
-            && let Some(rho) = self.base_mirror(down, rng)
+            && let Some(rho) = self.base_mirror(c.down, rng)
         {
-            let chains = self.delta_chains(up, self.round_trips(depth + 2), rng).0;
-            let path = p * tr(z, down) * tr(self.thickness, up) * exit;
+            let chains = self.delta_chains(c, self.round_trips(depth + 2), rng).0;
+            let path = p * tr(z, c.down) * c.t * exit;
             f += rho * chains * path;
         }
         f
@@ -672,7 +688,10 @@ impl<T: LayerInterface, B: Bxdf> Layered<T, B> {
             .sample(wi, u, uc)
             .filter(|s| usable(s) && s.wi.z < 0.0);
         let smooth_top = self.smooth_top();
-        let chains = self.chains();
+        // The delta chains toward the exit direction, fixed for the walk.
+        let chain = wis
+            .filter(|_| self.chains())
+            .map(|s| self.chain_exit(-s.wi));
         let specular_bottom = !self.bottom.lobes().is_non_specular();
         let mut beta = B::Spectrum::splat(weight(&wos));
         let mut walk = Walk {
@@ -707,9 +726,9 @@ impl<T: LayerInterface, B: Bxdf> Layered<T, B> {
                         power_heuristic(1.0, wis.pdf, 1.0, p)
                     };
                     let direct = p * wt * self.to_top(z, to) * wis.f / wis.pdf;
-                    if chains {
+                    if let Some(c) = &chain {
                         let exit = wis.f / wis.pdf;
-                        f += self.eval_chains(depth, z, -walk.w, to, direct, exit, rng)
+                        f += self.eval_chains(depth, z, -walk.w, c, direct, exit, rng)
                             * beta
                             * self.albedo;
                     } else {
@@ -755,9 +774,9 @@ impl<T: LayerInterface, B: Bxdf> Layered<T, B> {
                         power_heuristic(1.0, wis.pdf, 1.0, pb)
                     };
                     let scale = to.z.abs() * wt * self.to_top(0.0, to) * wis.f / wis.pdf;
-                    if chains && !fb.is_black() {
+                    if let (Some(c), false) = (&chain, fb.is_black()) {
                         let trips = self.round_trips(depth + 1);
-                        f += beta * fb * scale * self.delta_chains(to, trips, rng).0;
+                        f += beta * fb * scale * self.delta_chains(c, trips, rng).0;
                     } else {
                         f += beta * fb * scale;
                     }
@@ -798,7 +817,6 @@ impl<T: LayerInterface, B: Bxdf> Layered<T, B> {
     /// ([`delta_chains`](Self::delta_chains), [`pdf_chains`](Self::pdf_chains)).
     fn pdf_walk(&self, at: &At<T::Prepared>, wi: Vec3, rng: &mut WalkRng) -> f32 {
         let smooth_top = self.smooth_top();
-        let chains = self.chains();
         // The entry. A smooth top transmits toward the refracted direction with probability
         // 1 − F(wo): the walk takes that branch and weighs its density by the probability
         // (the expectation over the top's choice), rather than drawing the choice and counting
@@ -822,12 +840,12 @@ impl<T: LayerInterface, B: Bxdf> Layered<T, B> {
                 None => return 0.0,
             }
         };
-        // For a smooth top: the internal direction that refracts into wi, travelling up.
-        // For a rough one: a direction inside sampled from wi, with the top's density of
-        // leaving toward wi from it.
+        // For a smooth top: the internal direction that refracts into wi, travelling up, with
+        // the density of leaving toward wi along it. For a rough one: a direction inside
+        // sampled from wi, with the top's density of leaving toward wi from it.
         let (w_star, wis) = if smooth_top {
             match refract_away(wi, Vec3::Z, self.top.eta()) {
-                Some(a) if a.z < 0.0 => (Some(-a), None),
+                Some(a) if a.z < 0.0 => (Some((-a, self.smooth_exit_density(-a, wi))), None),
                 _ => return 0.0,
             }
         } else {
@@ -839,6 +857,10 @@ impl<T: LayerInterface, B: Bxdf> Layered<T, B> {
                 .map(|s| (s, self.top.pdf(s.wi, wi)));
             (None, wis)
         };
+        // The delta chains toward w_star, fixed for the walk.
+        let chain = w_star
+            .filter(|_| self.chains())
+            .map(|(ws, _)| self.chain_exit(ws));
         let mut density = 0.0_f32;
         let mut beta = B::Spectrum::one();
         let mut walk = Walk {
@@ -857,14 +879,11 @@ impl<T: LayerInterface, B: Bxdf> Layered<T, B> {
             if self.advance(&mut walk, &mut beta, rng) {
                 let z = walk.z;
                 if exit_ok {
-                    if let Some(ws) = w_star {
-                        let direct = self.phase.eval(-walk.w, ws)
-                            * self.reach_top(z, ws)
-                            * self.smooth_exit_density(ws, wi);
-                        density += if chains {
-                            self.pdf_chains(depth, z, -walk.w, ws, direct, wi, rng)
-                        } else {
-                            direct
+                    if let Some((ws, exit)) = w_star {
+                        let direct = self.phase.eval(-walk.w, ws) * self.reach_top(z, ws) * exit;
+                        density += match &chain {
+                            Some(c) => self.pdf_chains(depth, z, -walk.w, c, direct, exit, rng),
+                            None => direct,
                         };
                     }
                     if let Some((s, p_exit)) = wis {
@@ -900,14 +919,13 @@ impl<T: LayerInterface, B: Bxdf> Layered<T, B> {
             } else {
                 let wo_b = -walk.w;
                 if exit_ok {
-                    if let Some(ws) = w_star {
-                        let direct = self.bottom.pdf(wo_b, ws)
-                            * self.reach_top(0.0, ws)
-                            * self.smooth_exit_density(ws, wi);
-                        density += if chains && direct > 0.0 {
-                            direct * self.delta_chains(ws, self.round_trips(depth + 1), rng).1
-                        } else {
-                            direct
+                    if let Some((ws, exit)) = w_star {
+                        let direct = self.bottom.pdf(wo_b, ws) * self.reach_top(0.0, ws) * exit;
+                        density += match &chain {
+                            Some(c) if direct > 0.0 => {
+                                direct * self.delta_chains(c, self.round_trips(depth + 1), rng).1
+                            }
+                            _ => direct,
                         };
                     }
                     if let Some((s, p_exit)) = wis {
