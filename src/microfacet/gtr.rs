@@ -97,6 +97,25 @@ struct Shape {
     ln_a2: f32,
     /// `ln c`, the log of the normalisation.
     ln_c: f32,
+    /// The sampler's inverted CDF read from the normal (`q = 1 − u`, `ℓ = −ln α²`) and from
+    /// grazing (`q = u`, `ℓ = ln α²`): its exponential, which depends on `α` and `γ` only.
+    ends: [End; 2],
+}
+
+/// One end of [`Shape::ln_one_plus`]: `x = (1 − γ) ℓ` and `expm1(x)`, or `e^(−x)` where
+/// `x > 64` (see there).
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct End {
+    x: f32,
+    e: f32,
+}
+
+impl End {
+    fn new(gamma: f32, ell: f32) -> Self {
+        let x = (1.0 - gamma) * ell;
+        let e = if x > 64.0 { exp(-x) } else { exp_m1(x) };
+        Self { x, e }
+    }
 }
 
 impl Shape {
@@ -113,6 +132,7 @@ impl Shape {
             t,
             ln_a2,
             ln_c: ln_normalisation(t, ln_a2, gamma),
+            ends: [End::new(gamma, -ln_a2), End::new(gamma, ln_a2)],
         }
     }
 
@@ -132,19 +152,19 @@ impl Shape {
     /// snaps the lobe onto a few rings around the normal). Where it exceeds ½, `cos² θ` comes
     /// from its closed form instead, so that the small one of the two is never a difference.
     fn sample_sin2_cos2(&self, u: f32) -> (f32, f32) {
-        let Self { a2, t, ln_a2, .. } = *self;
+        let Self { a2, t, .. } = *self;
         if t.abs() < 1e-7 {
             // α = 1: D is uniform and D cos θ is the cosine distribution, cos² θ uniform.
             return (1.0 - u, u);
         }
         // sin² θ = α² y with ln(1 + (1 − α²) y) from the quantile 1 − u measured from the
         // normal (see `ln_one_plus`); 1 + (1 − α²) y = (1 + t cos² θ)/α².
-        let sin2 = a2 * (exp_m1(self.ln_one_plus(1.0 - u, -ln_a2)) / -t);
+        let sin2 = a2 * (exp_m1(self.ln_one_plus(1.0 - u, 0)) / -t);
         if sin2 <= 0.5 {
             return (sin2.max(0.0), 1.0 - sin2);
         }
         // cos² θ = x with ln(1 + t x) from the quantile u measured from grazing.
-        let cos2 = (exp_m1(self.ln_one_plus(u, ln_a2)) / t).clamp(0.0, 1.0);
+        let cos2 = (exp_m1(self.ln_one_plus(u, 1)) / t).clamp(0.0, 1.0);
         (1.0 - cos2, cos2)
     }
 
@@ -163,18 +183,23 @@ impl Shape {
     /// in `f32` near 1), for every `γ ≠ 1` however close to 1. `expm1((1 − γ) ℓ)` is taken up
     /// to `(1 − γ) ℓ = 64`; beyond, which only `q = u` with `α < 1 < γ` reaches (up to 166 at
     /// `α = 1e-4`, `γ = 10`), `ln(1 + q (eˣ − 1)) = x + ln(q + (1 − q) e⁻ˣ)` cannot overflow.
-    fn ln_one_plus(&self, q: f32, ell: f32) -> f32 {
+    ///
+    /// `end` picks `ℓ`: 0 for `−ln α²`, 1 for `ln α²` ([`ends`](Self::ends), which hold the
+    /// exponential, a constant of the distribution).
+    #[inline]
+    fn ln_one_plus(&self, q: f32, end: usize) -> f32 {
         let one_minus_gamma = 1.0 - self.gamma;
         if one_minus_gamma == 0.0 {
+            let ell = if end == 0 { -self.ln_a2 } else { self.ln_a2 };
             return q * ell;
         }
-        let x = one_minus_gamma * ell;
+        let End { x, e } = self.ends[end];
         let ln_rhs = if x > 64.0 {
             // 1 + q (eˣ − 1) = eˣ (q + (1 − q) e⁻ˣ), which cannot overflow; for q ≥ 2⁻²⁴ the
             // log is above −17, so adding it to x > 64 loses under two bits.
-            x + ln(q + (1.0 - q) * exp(-x))
+            x + ln(q + (1.0 - q) * e)
         } else {
-            ln_1p(q * exp_m1(x))
+            ln_1p(q * e)
         };
         ln_rhs / one_minus_gamma
     }
