@@ -96,10 +96,18 @@ pub(crate) fn catmull_rom<const N: usize>(g: &[f32; N], x: f32) -> f32 {
 }
 
 /// `asinh x` for `x ≥ 0` (`+∞` at `+∞`), accurate near 0.
+///
+/// `ln(x + √(1 + x²))` from `x = ½`, where the logarithm's argument is at least 1.6 and nothing
+/// cancels; below, `ln_1p` of the same argument less 1, written without the cancellation. (The
+/// `ln_1p` form holds everywhere, but glibc's `log1pf` costs about four times its `logf`,
+/// 12.9 against 3.0 ns a call in a throughput loop on the project's machine, and a table
+/// coordinate needs no more than a few units in the last place.)
 #[inline]
 fn asinh(x: f32) -> f32 {
     if x > 1e9 {
         ln(x) + LN_2
+    } else if x >= 0.5 {
+        ln(x + sqrt(1.0 + x * x))
     } else {
         ln_1p(x + x * x / (1.0 + sqrt(1.0 + x * x)))
     }
@@ -185,6 +193,30 @@ pub(crate) fn phi_integral(a: f32, b: f32) -> f32 {
 mod tests {
     use super::*;
     use core::f32::consts::{FRAC_1_PI, PI};
+
+    /// `asinh` against `f64`'s over a log grid of 200,000 points from 1e-30 to 1e30, both
+    /// branches and their seam at ½: within 4e-7 relative (measured 2.3e-7; the `ln_1p` form alone,
+    /// 1.4e-7).
+    #[test]
+    fn asinh_is_accurate_on_both_branches() {
+        let mut worst = (0.0_f64, 0.0_f32);
+        for i in 0..=200_000 {
+            let x = 10f32.powf(-30.0 + 60.0 * i as f32 / 200_000.0);
+            for x in [x, 0.5 * (1.0 + (i as f32 - 100_000.0) * 1e-6)] {
+                let want = f64::from(x).asinh();
+                let err = ((f64::from(asinh(x)) - want) / want).abs();
+                if err > worst.0 {
+                    worst = (err, x);
+                }
+            }
+        }
+        std::println!(
+            "asinh: worst relative error {:.3e} at x = {:e}",
+            worst.0,
+            worst.1
+        );
+        assert!(worst.0 < 4e-7, "{worst:?}");
+    }
 
     #[test]
     fn phi_integral_of_the_clamped_cosine() {
