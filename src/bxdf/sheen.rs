@@ -105,6 +105,9 @@ pub struct Sheen<S = f32> {
     d_scale: f32,
     /// `(a, b, c, d, e)` interpolated at `r`.
     fit: [f32; 5],
+    /// `2 L(½)`, the constant of [`lambda`](Self::lambda)'s upper half (a `powf`: computed
+    /// once here rather than at every call with `μ ≥ ½`).
+    two_l_half: f32,
     /// `E(μ)` at `√μ = i / (TABLE − 1)`, for `c = 1`.
     albedo: [f32; TABLE],
     /// The projected area `A(μ) = μ / G1(μ)` at `√(1 − √μ) = j / (SMITH − 1)`, between one
@@ -135,9 +138,11 @@ impl<S: Spectrum> Sheen<S> {
             inv_r,
             d_scale: (2.0 + inv_r) / (2.0 * PI),
             fit,
+            two_l_half: 0.0,
             albedo: [0.0; TABLE],
             smith: None,
         };
+        sheen.two_l_half = 2.0 * sheen.l(0.5);
         sheen.tabulate_albedo();
         Ok(sheen)
     }
@@ -226,7 +231,7 @@ impl<S: Spectrum> Sheen<S> {
         let l = if mu < 0.5 {
             self.l(mu)
         } else {
-            2.0 * self.l(0.5) - self.l(1.0 - mu)
+            self.two_l_half - self.l(1.0 - mu)
         };
         exp(l).min(f32::MAX)
     }
