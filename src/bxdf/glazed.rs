@@ -36,6 +36,9 @@ pub struct Glazed<S = f32> {
     eta: Eta,
     /// `1 / (π (1 − F̄))`.
     diffuse_scale: f32,
+    /// The reflectance's channel average, for the lobe choice (stored: for RGB it is a
+    /// division).
+    mean_reflectance: f32,
 }
 
 impl<S: Spectrum> Glazed<S> {
@@ -61,6 +64,7 @@ impl<S: Spectrum> Glazed<S> {
             reflectance,
             eta,
             diffuse_scale,
+            mean_reflectance: reflectance.average(),
         })
     }
 
@@ -78,7 +82,7 @@ impl<S: Spectrum> Glazed<S> {
     #[inline]
     fn mirror_probability(&self, wo: Vec3) -> (f32, f32) {
         let f = dielectric(wo.z, self.eta);
-        let diffuse = (1.0 - f) * self.reflectance.average();
+        let diffuse = (1.0 - f) * self.mean_reflectance;
         let total = f + diffuse;
         (if total > 0.0 { f / total } else { 0.0 }, f)
     }

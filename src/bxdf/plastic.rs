@@ -58,6 +58,9 @@ pub struct Plastic<D, S = f32, C = Microfacet<D, Dielectric>> {
     coat_albedo: [f32; TABLE],
     /// `1 / (π (1 − Ē))`.
     diffuse_scale: f32,
+    /// The reflectance's channel average, for the lobe choice (stored: for RGB it is a
+    /// division).
+    mean_reflectance: f32,
     distribution: PhantomData<D>,
 }
 
@@ -71,6 +74,7 @@ impl<D, S: Clone, C: Clone> Clone for Plastic<D, S, C> {
             reflectance: self.reflectance.clone(),
             coat_albedo: self.coat_albedo,
             diffuse_scale: self.diffuse_scale,
+            mean_reflectance: self.mean_reflectance,
             distribution: PhantomData,
         }
     }
@@ -157,6 +161,7 @@ impl<D, S: Spectrum, C> Plastic<D, S, C> {
             reflectance,
             coat_albedo: table,
             diffuse_scale: 0.0,
+            mean_reflectance: reflectance.average(),
             distribution: PhantomData,
         };
         let e_avg = crate::fresnel::cosine_weighted_average(|mu| plastic.coat_albedo_at(mu));
@@ -188,7 +193,7 @@ impl<D, S: Spectrum, C> Plastic<D, S, C> {
     /// The probability of sampling the coat's lobe, given the coat's albedo `e` at `wo`.
     #[inline]
     fn coat_probability(&self, e: f32) -> f32 {
-        let total = e + (1.0 - e) * self.reflectance.average();
+        let total = e + (1.0 - e) * self.mean_reflectance;
         if total > 0.0 { e / total } else { 1.0 }
     }
 
