@@ -32,8 +32,32 @@ shim!(/// Absolute value.
     abs => abs, fabsf);
 shim!(/// Square root; NaN for negative input (see [`safe_sqrt`]).
     sqrt => sqrt, sqrtf);
-shim!(/// `e^x`.
-    exp => exp, expf);
+
+/// The largest `x` whose `e^x` rounds to zero: glibc's `expf` and the `libm` crate's (musl's)
+/// both return `+0` for every `x` below `-0x1.9fe368p6 = −103.97208`, and compute `e^x`
+/// (a subnormal) at that value.
+const EXP_UNDERFLOW: f32 = -103.972_076_416_015_625;
+
+/// `e^x`: `+0` where it rounds to zero, the library's `expf` elsewhere; the same numbers
+/// bit for bit as the library alone (`exp_matches_the_library` checks both sides of the
+/// threshold). glibc reaches its zero through a call that raises the underflow flag and sets
+/// `errno`, about as slow as `expf` itself; a lobe's tails (a narrow Beckmann `D`, a large
+/// Phong exponent) reach it often.
+#[inline(always)]
+#[must_use]
+pub fn exp(x: f32) -> f32 {
+    if x < EXP_UNDERFLOW {
+        return 0.0;
+    }
+    #[cfg(all(feature = "std", not(lobe_force_libm)))]
+    {
+        x.exp()
+    }
+    #[cfg(any(not(feature = "std"), lobe_force_libm))]
+    {
+        libm::expf(x)
+    }
+}
 shim!(/// Natural logarithm.
     ln => ln, logf);
 shim!(/// `e^x − 1`, accurate for small `x`.
@@ -405,6 +429,43 @@ pub(crate) fn mix64(mut z: u64) -> u64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The library's `expf`, on the path the build takes.
+    fn exp_of_the_library(x: f32) -> f32 {
+        #[cfg(all(feature = "std", not(lobe_force_libm)))]
+        {
+            x.exp()
+        }
+        #[cfg(any(not(feature = "std"), lobe_force_libm))]
+        {
+            libm::expf(x)
+        }
+    }
+
+    /// `exp` answers `+0` below the threshold and the library elsewhere: the same bits as the
+    /// library alone for every `f32` within 2¹⁶ of the threshold's bit pattern, a stride of
+    /// 61 bit patterns over all of `[−∞, ∞]`, the infinities and NaN.
+    #[test]
+    fn exp_matches_the_library() {
+        let threshold = EXP_UNDERFLOW.to_bits();
+        assert_eq!(threshold, 0xc2cf_f1b4);
+        let near = (threshold - (1 << 16))..(threshold + (1 << 16));
+        let stride = (0..=u32::MAX / 61).map(|k| k * 61);
+        let ends = [f32::NEG_INFINITY, f32::INFINITY, f32::NAN, -0.0, 0.0].map(f32::to_bits);
+        let mut below = 0_u32;
+        for bits in near.chain(stride).chain(ends) {
+            let x = f32::from_bits(bits);
+            let (ours, theirs) = (exp(x), exp_of_the_library(x));
+            assert!(
+                ours.to_bits() == theirs.to_bits() || (ours.is_nan() && theirs.is_nan()),
+                "exp({x:e}) = {ours:e}, the library's {theirs:e}"
+            );
+            below += u32::from(x < EXP_UNDERFLOW);
+        }
+        // The answer below the threshold was reached, and the library's subnormals above it.
+        assert!(below > 15_000_000, "{below}");
+        assert!(exp(EXP_UNDERFLOW) > 0.0);
+    }
 
     #[test]
     fn sin_cos_turns_matches_the_library_in_f64() {
