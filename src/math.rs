@@ -46,17 +46,15 @@ const EXP_UNDERFLOW: f32 = -103.972_08;
 #[inline(always)]
 #[must_use]
 pub fn exp(x: f32) -> f32 {
-    if x < EXP_UNDERFLOW {
-        return 0.0;
-    }
+    // Selects rather than a branch: the library never sees an argument below the threshold
+    // (NaN passes through to it), and the answer there is +0.
+    let below = x < EXP_UNDERFLOW;
+    let y = if below { EXP_UNDERFLOW } else { x };
     #[cfg(all(feature = "std", not(lobe_force_libm)))]
-    {
-        x.exp()
-    }
+    let e = y.exp();
     #[cfg(any(not(feature = "std"), lobe_force_libm))]
-    {
-        libm::expf(x)
-    }
+    let e = libm::expf(y);
+    if below { 0.0 } else { e }
 }
 shim!(/// Natural logarithm.
     ln => ln, logf);
