@@ -1,6 +1,6 @@
 //! Criterion benchmarks of the shading hot loop as a renderer runs it: the material changes
 //! from one call to the next. Each model runs over the fixed 4,096 inputs of
-//! `benches/common/inputs.rs` twice:
+//! `benches/common/inputs.rs` three times:
 //!
 //! * `one: eval` (and `pdf`, `sample`): one material for the whole pass, as in
 //!   `benches/shading.rs`; what depends only on the model's parameters may be computed once,
@@ -19,8 +19,8 @@
 //! The first two rows of a model differ by the per-call work on its parameters and by reading
 //! the material through the index; the last two by the other materials' own costs (a
 //! narrower lobe, a larger exponent, branches that differ from call to call). The one
-//! material is the eighth of the sixteen, in the middle of each range. Every figure is per
-//! call, like the shading benchmarks' (criterion's time divided by 4,096).
+//! material is the eighth of the sixteen, near the middle of each range (`t = 7/15`). Every
+//! figure is per call, like the shading benchmarks' (criterion's time divided by 4,096).
 
 #[path = "common/inputs.rs"]
 mod inputs;
