@@ -3,7 +3,7 @@
 
 use super::diffuse_glossy::{checked_parameters, cos_power_norm};
 use crate::frame::reflect_away;
-use crate::math::{cos_pow, exp, sqrt};
+use crate::math::{Power, exp, sqrt};
 use crate::param::ParamError;
 use crate::sampling::cosine_hemisphere_pdf;
 use crate::spectrum::Spectrum;
@@ -124,7 +124,8 @@ pub enum BlinnPhongForm {
 pub struct BlinnPhong<S = f32> {
     kd: S,
     ks: S,
-    exponent: f32,
+    /// The exponent `p`, with the base below which `(n·h)^p` is zero.
+    power: Power,
     form: BlinnPhongForm,
     /// `R / π`.
     diffuse_over_pi: S,
@@ -154,7 +155,7 @@ impl<S: Spectrum> BlinnPhong<S> {
         Ok(Self {
             kd,
             ks,
-            exponent: p,
+            power: Power::new(p),
             form,
             diffuse_over_pi: kd * FRAC_1_PI,
             glossy: ks * lobe_factor(form, p),
@@ -168,10 +169,15 @@ impl<S: Spectrum> BlinnPhong<S> {
         kd: S,
         /// The specular weight `k_s`.
         ks: S,
-        /// The exponent `p`.
-        exponent: f32,
         /// Which lobe.
         form: BlinnPhongForm,
+    }
+
+    /// The exponent `p`.
+    #[inline]
+    #[must_use]
+    pub fn exponent(&self) -> f32 {
+        self.power.exponent()
     }
 
     /// The directional albedo at normal incidence, in closed form:
@@ -181,7 +187,7 @@ impl<S: Spectrum> BlinnPhong<S> {
     /// the exponents tested; above 1 it measures the model's energy gain.
     #[must_use]
     pub fn albedo_at_normal(&self) -> S {
-        let p = self.exponent;
+        let p = self.power.exponent();
         let lobe =
             8.0 * PI * (p + exp(-0.5 * core::f32::consts::LN_2 * p)) / ((p + 2.0) * (p + 4.0));
         self.kd + self.glossy * lobe
@@ -198,7 +204,7 @@ impl<S: Spectrum> BlinnPhong<S> {
             return (0.0, 1.0);
         }
         let len = sqrt(s2);
-        (cos_pow(s.z / len, sxy / s2, self.exponent), len)
+        (self.power.cos_pow(s.z / len, sxy / s2), len)
     }
 
     /// The BRDF from `(n·h)^p`.
@@ -219,7 +225,7 @@ impl<S: Spectrum> BlinnPhong<S> {
     fn sample_glossy(&self, wo: Vec3, u: Vec2) -> Vec3 {
         reflect_away(
             wo,
-            crate::sampling::cosine_power_hemisphere(u, self.exponent),
+            crate::sampling::cosine_power_hemisphere(u, self.power.exponent()),
         )
     }
 }

@@ -2,7 +2,7 @@
 
 use super::diffuse_glossy::{checked_parameters, cos_power_norm};
 use crate::frame::Frame;
-use crate::math::{exp, ln_1p, powf, sqrt};
+use crate::math::{Power, exp, ln_1p, sqrt};
 use crate::param::ParamError;
 use crate::sampling::cosine_hemisphere_pdf;
 use crate::spectrum::Spectrum;
@@ -96,7 +96,8 @@ use glam::{Vec2, Vec3};
 pub struct Phong<S = f32> {
     kd: S,
     ks: S,
-    exponent: f32,
+    /// The exponent `p`, with the base below which `cos^p` is zero.
+    power: Power,
     /// `k_d / π`.
     diffuse: S,
     /// `k_s (p + 2)/(2π)`.
@@ -122,7 +123,7 @@ impl<S: Spectrum> Phong<S> {
         Ok(Self {
             kd,
             ks,
-            exponent: p,
+            power: Power::new(p),
             diffuse: kd * FRAC_1_PI,
             glossy: ks * ((p + 2.0) * 0.5 * FRAC_1_PI),
             p_diffuse,
@@ -135,8 +136,13 @@ impl<S: Spectrum> Phong<S> {
         kd: S,
         /// The glossy weight `k_s`.
         ks: S,
-        /// The exponent `p`.
-        exponent: f32,
+    }
+
+    /// The exponent `p`.
+    #[inline]
+    #[must_use]
+    pub fn exponent(&self) -> f32 {
+        self.power.exponent()
     }
 
     /// `k_d + k_s`: the directional albedo at normal incidence, and its maximum over all
@@ -154,7 +160,7 @@ impl<S: Spectrum> Phong<S> {
         let d = Vec3::new(wo.x + wi.x, wo.y + wi.y, wo.z - wi.z);
         let one_minus_cos =
             0.5 * d.length_squared() / sqrt(wo.length_squared() * wi.length_squared());
-        cos_power(one_minus_cos, self.exponent)
+        cos_power(one_minus_cos, self.power)
     }
 
     /// The BRDF from the lobe's value `cos^p α`.
@@ -173,7 +179,7 @@ impl<S: Spectrum> Phong<S> {
     #[inline]
     fn sample_glossy(&self, wo: Vec3, u: Vec2) -> Vec3 {
         let r = Vec3::new(-wo.x, -wo.y, wo.z);
-        let local = crate::sampling::cosine_power_hemisphere(u, self.exponent);
+        let local = crate::sampling::cosine_power_hemisphere(u, self.power.exponent());
         Frame::from_normal(r).to_world(local)
     }
 }
@@ -183,12 +189,12 @@ diffuse_glossy_model!(Phong);
 /// `cos^p` of an angle given `1 − cos ≥ 0`; zero at and beyond 90° (`1 − cos ≥ 1`), even for
 /// `p = 0`. Near the axis it is `exp(p ln(1 − t))` from the precise `t = 1 − cos`.
 #[inline]
-fn cos_power(one_minus_cos: f32, p: f32) -> f32 {
+fn cos_power(one_minus_cos: f32, power: Power) -> f32 {
     if one_minus_cos < 0.5 {
-        exp(p * ln_1p(-one_minus_cos))
+        exp(power.exponent() * ln_1p(-one_minus_cos))
     } else if one_minus_cos < 1.0 {
         // 1 − t is exact here (Sterbenz).
-        powf(1.0 - one_minus_cos, p)
+        power.of(1.0 - one_minus_cos)
     } else {
         0.0
     }

@@ -2,7 +2,7 @@
 
 use super::smith_table::{SmithTable, lambda_from_g1};
 use super::{Beckmann, NormalDistribution, SampleDCos, Sampling, View};
-use crate::math::{cos_pow, exp, exp_m1, ln, sqrt};
+use crate::math::{Power, exp, exp_m1, ln, sqrt};
 use crate::param::{Alpha, ParamError};
 use core::f32::consts::FRAC_1_PI;
 use glam::{Vec2, Vec3};
@@ -38,7 +38,8 @@ pub(crate) const BLINN_PHONG_ALPHA: &str = "[0.0001, 1] (Blinn-Phong)";
 /// [`sample`](NormalDistribution::sample) is that sampler.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct BlinnPhongNdf {
-    exponent: f32,
+    /// The exponent `p`, with the base below which `cos^p θ` is zero.
+    power: Power,
     /// `(p + 2) / (2π)`.
     norm: f32,
     beckmann: Beckmann,
@@ -59,7 +60,7 @@ impl BlinnPhongNdf {
         }
         let exponent = 2.0 / (a * a) - 2.0;
         Ok(Self {
-            exponent,
+            power: Power::new(exponent),
             norm: FRAC_1_PI / (a * a),
             beckmann: Beckmann::isotropic(alpha),
             smith: None,
@@ -76,7 +77,7 @@ impl BlinnPhongNdf {
         }
         let alpha = Alpha::new(sqrt(2.0 / (p + 2.0)))?;
         Ok(Self {
-            exponent: p,
+            power: Power::new(p),
             norm: (p + 2.0) * 0.5 * FRAC_1_PI,
             beckmann: Beckmann::isotropic(alpha),
             smith: None,
@@ -87,8 +88,9 @@ impl BlinnPhongNdf {
     /// (see [`Gtr`](super::Gtr) for the method), instead of Beckmann's.
     #[must_use]
     pub fn with_exact_smith(self) -> Self {
-        let (p, norm) = (self.exponent, self.norm);
-        let d = move |cos: f32, sin: f32| norm * cos_pow(cos, sin * sin, p);
+        let (power, norm) = (self.power, self.norm);
+        let p = power.exponent();
+        let d = move |cos: f32, sin: f32| norm * power.cos_pow(cos, sin * sin);
         // The median slope of D cos θ: cos θ = ½^(1/(p+2)).
         let l = ln(0.5) / (p + 2.0);
         let beta = sqrt((-exp_m1(2.0 * l)).max(0.0)) / exp(l);
@@ -105,9 +107,11 @@ impl BlinnPhongNdf {
         self.smith.is_some()
     }
 
-    getters! {
-        /// The exponent `p`.
-        exponent: f32,
+    /// The exponent `p`.
+    #[inline]
+    #[must_use]
+    pub fn exponent(&self) -> f32 {
+        self.power.exponent()
     }
 
     /// The equivalent Beckmann width `α = √(2/(p + 2))`.
@@ -124,15 +128,15 @@ impl NormalDistribution for BlinnPhongNdf {
         Sampling::DCos
     }
 
-    #[inline]
+    #[inline(always)]
     fn d(&self, m: Vec3) -> f32 {
         if !(m.z > 0.0) {
             return 0.0;
         }
-        self.norm * cos_pow(m.z, m.x * m.x + m.y * m.y, self.exponent)
+        self.norm * self.power.cos_pow(m.z, m.x * m.x + m.y * m.y)
     }
 
-    #[inline]
+    #[inline(always)]
     fn lambda(&self, w: Vec3) -> f32 {
         match &self.smith {
             None => self.beckmann.lambda(w),
@@ -140,7 +144,7 @@ impl NormalDistribution for BlinnPhongNdf {
         }
     }
 
-    #[inline]
+    #[inline(always)]
     fn g1(&self, w: Vec3) -> f32 {
         match &self.smith {
             None => self.beckmann.g1(w),
@@ -160,6 +164,6 @@ impl SampleDCos for BlinnPhongNdf {
     /// large `p`.
     fn sample_d_cos(&self, u: Vec2) -> Vec3 {
         // D cos θ ∝ cos^(p+1) θ.
-        crate::sampling::cosine_power_hemisphere(u, self.exponent + 1.0)
+        crate::sampling::cosine_power_hemisphere(u, self.power.exponent() + 1.0)
     }
 }
