@@ -102,9 +102,13 @@ mod tests {
     /// The library's `powf`, which [`Power::of`] answers for.
     fn powf_of_the_library(x: f32, p: f32) -> f32 {
         #[cfg(all(feature = "std", not(lobe_force_libm)))]
-        return x.powf(p);
+        {
+            x.powf(p)
+        }
         #[cfg(any(not(feature = "std"), lobe_force_libm))]
-        return libm::powf(x, p);
+        {
+            libm::powf(x, p)
+        }
     }
 
     /// Exponents from below the first with a threshold (`p ≈ 1.2`) to the largest the models
