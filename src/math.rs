@@ -447,7 +447,7 @@ mod tests {
 
     /// `exp` answers `+0` below the threshold and the library elsewhere: the same bits as the
     /// library alone for every `f32` within 2¹⁶ of the threshold's bit pattern, a stride of
-    /// 61 bit patterns over all of `[−∞, ∞]` and the NaNs, the infinities and NaN.
+    /// 61 bit patterns over every `f32` (NaNs included), the infinities, ±0 and NaN.
     #[test]
     fn exp_matches_the_library() {
         let threshold = EXP_UNDERFLOW.to_bits();

@@ -5,8 +5,8 @@ use super::{ln_1p, powf};
 use crate::math::exp;
 
 /// The exponent below whose power of two every power rounds to zero: `x^p < 2⁻¹⁵¹` for
-/// `x < 2^(−151/p)`, half the `f32` value that rounds to zero (`2⁻¹⁵⁰`, half the smallest
-/// subnormal).
+/// `x < 2^(−151/p)`, half of `2⁻¹⁵⁰`, the largest value that rounds to `+0` (half the
+/// smallest subnormal).
 const ZERO_LOG2: f32 = -151.0;
 
 /// An exponent `p ≥ 0` and the base `b` below which `x^p` rounds to `+0`, for raising many
@@ -18,12 +18,19 @@ const ZERO_LOG2: f32 = -151.0;
 /// flag and sets `errno`, as its `expf` does ([`exp`]): a narrow lobe's tail reaches it at
 /// most calls.
 ///
-/// `b` is `2^(−151/p)` rounded down by four units in the last place: then `x < b` gives
-/// `x^p < 2⁻¹⁵¹ (1 + 6e-6)`, below the `2⁻¹⁵⁰` at which a rounded power stops being zero, by
-/// a margin that `powf`'s error (within an ulp) cannot cross. (The rounding of `−151/p` moves
-/// `b^p` by a factor `2^(151 · 2⁻²⁴)`, `1 + 6e-6`; the library's `2^(−151/p)` is within an
-/// ulp, `2⁻²³` relative, and four ulps are at least `2⁻²²`.) Between `b` and the exact
-/// threshold `powf` answers, as before.
+/// `b` is the library's `2^(−151/p)` rounded down by four units in the last place, and the
+/// proof that `x < b` gives a zero power has two steps. First, `b < 2^q` exactly, where
+/// `q = −151/p` rounded to `f32`: the library's power of two is within an ulp of `2^q` and
+/// four ulps are more than one. Then `x^p < b^p < 2^(pq)`, and `pq` is `−151` to within
+/// `2⁻²⁴` relative, so `x^p < 2⁻¹⁵¹ (1 + 6.2e-6)`: half of `2⁻¹⁵⁰`, the largest value that
+/// rounds to `+0` (the smallest subnormal is `2⁻¹⁴⁹`). What carries the proof is that factor
+/// of two: an error "within an ulp" says nothing down there, where one ulp is `2⁻¹⁴⁹`
+/// absolute. `powf` rounds to `+0` any value it computes below `2⁻¹⁵⁰`, so it is enough that
+/// its result before the final rounding is within a factor `1.99` of `x^p`; glibc's and the
+/// `libm` crate's are within far less, and other platforms' `powf` are assumed to be too.
+/// (With `−150` in place of `−151` there is no such margin, and the library answers the
+/// smallest subnormal for some `x < b`.) Between `b` and the exact threshold `powf`
+/// answers, as before.
 ///
 /// ```
 /// use lobe::math::{Power, powf};
@@ -112,8 +119,9 @@ mod tests {
     }
 
     /// Exponents from below the first with a threshold (`p ≈ 1.2`) to the largest the models
-    /// take (Phong's 10⁶, the Blinn-Phong distribution's 10⁸), and the degenerate ones.
-    const EXPONENTS: [f32; 16] = [
+    /// take (Phong's 10⁶, the Blinn-Phong distribution's `2·10⁸` at `α = 10⁻⁴`), the
+    /// degenerate ones and NaN.
+    const EXPONENTS: [f32; 17] = [
         0.0,
         0.5,
         1.0,
@@ -129,6 +137,7 @@ mod tests {
         4_096.0,
         1e6,
         1e8,
+        2e8,
         f32::NAN,
     ];
 
@@ -166,20 +175,49 @@ mod tests {
     }
 
     /// The threshold is close to the exact one: the library's power is zero at it and
-    /// subnormal or larger a factor `2^(1.5/p)` above it: `b^p` is within a factor `2^1.5` of
-    /// the largest power that rounds to zero, `2⁻¹⁵⁰` (a factor 2, and the four ulps, which
-    /// weigh `e^(−0.24)` at `p = 10⁶`).
+    /// subnormal or larger a little above it, at the larger of a factor `2^(1.5/p)` and six
+    /// ulps. The factor covers the two that `−151` leaves below `2⁻¹⁵⁰`; the ulps cover the
+    /// four-ulp margin where one ulp moves `b^p` by more than that factor (from `p ≈ 10⁷`,
+    /// where `2^(1.5/p)` rounds to within an ulp of one).
     #[test]
     fn threshold_is_tight() {
-        for p in [1.5, 4.0, 50.0, 150.0, 512.0, 4_096.0, 1e6] {
+        for p in [1.5, 4.0, 50.0, 150.0, 512.0, 4_096.0, 1e6, 1e7, 1e8, 2e8] {
             let b = Power::new(p).zero_below();
             assert!(b > 0.0, "p = {p}");
             assert_eq!(powf_of_the_library(b, p), 0.0, "p = {p}");
-            let above = b * powf_of_the_library(2.0, 1.5 / p);
+            let above =
+                (b * powf_of_the_library(2.0, 1.5 / p)).max(f32::from_bits(b.to_bits() + 6));
             assert!(powf_of_the_library(above, p) > 0.0, "p = {p}");
         }
         for p in [0.0, 1.0, -2.0, f32::NAN] {
             assert_eq!(Power::new(p).zero_below(), 0.0, "p = {p}");
         }
+    }
+
+    /// The first step of the proof in [`Power`]'s docs, checked in `f64` over 10⁵ exponents
+    /// spaced evenly in `log p` from 1.2 to `2·10⁸`: the threshold lies strictly below
+    /// `2^q`, `q = −151/p` rounded to `f32`, and so its power below `2⁻¹⁵¹ (1 + 6.2e-6)`.
+    /// Without the four-ulp margin the first fails wherever the library's `2^q` rounds up.
+    #[test]
+    fn threshold_is_below_the_exact_power_of_two() {
+        let n = 100_000;
+        let (lo, hi) = (1.2_f64.ln(), 2e8_f64.ln());
+        let mut checked = 0;
+        for k in 0..=n {
+            let p = (lo + (hi - lo) * f64::from(k) / f64::from(n)).exp() as f32;
+            let b = Power::new(p).zero_below();
+            if b == 0.0 {
+                continue; // `2^(−151/p)` subnormal: no threshold
+            }
+            let q = f64::from(ZERO_LOG2 / p);
+            assert!(f64::from(b) < q.exp2(), "p = {p}: {b:e}");
+            let power = f64::from(b).powf(f64::from(p));
+            assert!(
+                power < 2f64.powi(-151) * (1.0 + 6.2e-6),
+                "p = {p}: {power:e}"
+            );
+            checked += 1;
+        }
+        assert!(checked > 99_000, "{checked}");
     }
 }
