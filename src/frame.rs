@@ -212,6 +212,16 @@ pub fn reflect_about(w: Vec3, n: Vec3) -> Vec3 {
 #[inline(always)]
 #[must_use]
 pub fn refract_away(w: Vec3, n: Vec3, eta: Eta) -> Option<Vec3> {
+    let (wt, refracts) = refract_away_lane(w, n, eta);
+    if refracts { Some(wt) } else { None }
+}
+
+/// [`refract_away`] without a branch, for a loop over lanes: the refracted direction and
+/// whether there is one (`false` under total internal reflection, where the direction is a
+/// stand-in to discard).
+#[inline(always)]
+#[must_use]
+pub(crate) fn refract_away_lane(w: Vec3, n: Vec3, eta: Eta) -> (Vec3, bool) {
     let mut cos_i = w.dot(n);
     let e = eta.get();
     // η' = η_i / η_t and 1 − η'², for the side w is on, and the normal turned toward w.
@@ -225,14 +235,12 @@ pub fn refract_away(w: Vec3, n: Vec3, eta: Eta) -> Option<Vec3> {
     };
     let sin2_i = w.cross(n).length_squared();
     let cos2_t = cos_i * cos_i + one_minus_eta2 * sin2_i;
-    if cos2_t < 0.0 {
-        return None;
-    }
-    let cos_t = sqrt(cos2_t);
+    let refracts = !(cos2_t < 0.0);
+    let cos_t = sqrt(if refracts { cos2_t } else { 0.0 });
     // −η' times w's tangential part, then −cos θ_t along the normal: the same vector as
     // pbrt's `−η' w + (η' cos θ_i − cos θ_t) n`, without its cancellation in the normal
     // component near the critical angle (exact in z for n = z).
-    Some(-(w - n * cos_i) * eta_it - n * cos_t)
+    (-(w - n * cos_i) * eta_it - n * cos_t, refracts)
 }
 
 #[cfg(test)]

@@ -72,18 +72,19 @@
 //! scalar speed (drawing from both lobes in every lane did not vectorise either: LLVM's cost
 //! model finds vectorising that loop not beneficial).
 //!
-//! **Under AVX2 without AVX-512** three kinds of loop stay scalar, or nearly, because LLVM's
-//! cost model finds the vector loop not worth it there (measured on an AMD EPYC with AVX2
-//! and FMA only, 2026-11-29; the README's "Against other implementations" has the run). The
-//! rough dielectric's `eval` and `sample`: its half vector is computed in `f64` (for
-//! refraction `wo + η' wi` cancels), and with the Fresnel and masking work after it the
-//! `f32`–`f64` conversions tip the balance (its `pdf` loop still vectorises). The
-//! energy-compensated models and the plastic: their albedo tables are read per lane, a
-//! gather, which LLVM counts as slow on AVX2. AVX-512 vectorises all of them. Two probes
-//! outside the crate, not kept because they move values, showed the cause: the half vector
-//! in `f32` took the glass's batched `eval` from 30.6 to 5.8 ns per lane, and one fixed
-//! table entry in place of the lookup took the compensated Schlick conductor's from 9.1 to
-//! 4.8 ns.
+//! **Under AVX2 without AVX-512** LLVM's cost model weighs a gather, an `f64` operation and a
+//! branch that a loop must turn into selects more heavily than under AVX-512, and some loops
+//! stay scalar there, or nearly (measured on an AMD EPYC with AVX2 and FMA only, 2026-11-29;
+//! the README's "Against other implementations" has the run): the energy-compensated
+//! models' three calls and the plastic's `eval` and `sample`, whose albedo tables are read
+//! per lane (a gather). A probe outside the crate, not kept because it moves values, showed
+//! the cause: one fixed table entry in place of the lookup took the compensated Schlick
+//! conductor's batched `eval` from 9.1 to 4.8 ns per lane. The rough dielectric's `eval` and
+//! `sample` stayed scalar there too until their batched loops took forms without early
+//! returns: every lane forms both directions, the configuration and the value, and an
+//! unusable lane discards them (the same numbers). With its `f64` half vector (for
+//! refraction `wo + η' wi` cancels), the branches had tipped the balance. AVX-512
+//! vectorises all of them.
 //!
 //! **Batch size.** Keep a batch within the L2 cache: an RGB `eval`'s slices take 36 bytes per
 //! lane, so 2¹⁵ lanes are 1.1 MiB (the machine measured here has a 2 MiB L2). The outputs are

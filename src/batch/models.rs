@@ -91,7 +91,7 @@ macro_rules! masked {
 
 masked!(impl<D: NormalDistribution, F: Fresnel> for Microfacet<D, F> =>
     eval_with::<true>, sample_with::<true>);
-masked!(impl<D: NormalDistribution> for RoughDielectric<D> => eval_with, sample_with);
+masked!(impl<D: NormalDistribution> for RoughDielectric<D> => eval_lane, sample_with);
 masked!(impl<D: NormalDistribution, F: FresnelAverage> for CompensatedMicrofacet<D, F> =>
     eval_with::<true>, sample_with::<true>);
 masked!(impl<D: NormalDistribution> for CompensatedDielectric<D> => eval_with, sample_with);

@@ -1,7 +1,7 @@
 //! Walter et al.'s rough dielectric: microfacet reflection and refraction.
 
 use super::{At, BxdfSample, Lobes, Prepare, TransportMode, delta_scale, usable_pdf};
-use crate::frame::{reflect_away, refract_away};
+use crate::frame::{reflect_away, refract_away_lane};
 use crate::fresnel::{dielectric, dielectric_refracted};
 use crate::microfacet::{Masking, NormalDistribution, View};
 use crate::param::Eta;
@@ -143,37 +143,46 @@ impl<D: NormalDistribution> RoughDielectric<D> {
         }
         let reflection = wo.z * wi.z > 0.0;
         let etap = if reflection { 1.0 } else { self.etap(wo) };
-        // s = wo + η' wi in f64: for refraction the two nearly cancel around the
-        // straight-through direction, and |s| sets both h and the Jacobian's denominator.
-        let e = f64::from(etap);
-        let s = [
-            f64::from(wo.x) + e * f64::from(wi.x),
-            f64::from(wo.y) + e * f64::from(wi.y),
-            f64::from(wo.z) + e * f64::from(wi.z),
-        ];
-        let len2 = s[0] * s[0] + s[1] * s[1] + s[2] * s[2];
+        let (h, len2) = half_vector(wo, wi, etap);
         if !(len2 > 0.0) {
             return None;
         }
-        // Upper hemisphere: h = ±s/|s| with h.z > 0.
-        let scale = 1.0 / crate::math::sqrt_f64(len2) * if s[2] < 0.0 { -1.0 } else { 1.0 };
-        let h = Vec3::new(
-            (s[0] * scale) as f32,
-            (s[1] * scale) as f32,
-            (s[2] * scale) as f32,
-        );
         // Each direction must see the microfacet from its own side of the macro-surface.
         if wo.dot(h) * wo.z <= 0.0 || wi.dot(h) * wi.z <= 0.0 {
             return None;
         }
-        // (wi·h + (wo·h)/η')² = |s|²/η'², since h ∥ s: no cancellation.
-        let denom2 = (len2 / (e * e)) as f32;
         Some(Configuration {
             h,
             reflection,
             etap,
-            denom2,
+            denom2: jacobian_denominator(len2, etap),
         })
+    }
+
+    /// [`configuration`](Self::configuration) without a branch: the configuration and whether
+    /// it is usable (the same tests). An unusable pair gets a harmless stand-in (`h = z`,
+    /// `denom2 = 1`) that the caller must discard; a usable one the same numbers. A loop over
+    /// lanes then has no early return to turn into selects: with them, LLVM did not
+    /// vectorise the batched `eval` and `sample` under AVX2 (measured 2026-11-29).
+    #[inline(always)]
+    fn configuration_of_lane(&self, wo: Vec3, wi: Vec3) -> (Configuration, bool) {
+        let reflection = wo.z * wi.z > 0.0;
+        let etap = if reflection { 1.0 } else { self.etap(wo) };
+        let (h, len2) = half_vector(wo, wi, etap);
+        let usable = !((wo.z * wi.z).abs() < f32::MIN_POSITIVE || self.index_matched())
+            && len2 > 0.0
+            && !(wo.dot(h) * wo.z <= 0.0 || wi.dot(h) * wi.z <= 0.0);
+        let c = Configuration {
+            h: if usable { h } else { Vec3::Z },
+            reflection,
+            etap,
+            denom2: if usable {
+                jacobian_denominator(len2, etap)
+            } else {
+                1.0
+            },
+        };
+        (c, usable)
     }
 
     /// The Fresnel reflectance `F(wo·h)` of a configuration, which chooses between the lobes.
@@ -230,6 +239,36 @@ impl<D: NormalDistribution> RoughDielectric<D> {
     }
 }
 
+/// The generalised half vector `h = ±s/|s|` (upper hemisphere) of `s = wo + η' wi`, and `|s|²`,
+/// both from `s` in `f64`: for refraction the two nearly cancel around the straight-through
+/// direction, and `|s|` sets both `h` and the Jacobian's denominator. `h` is of no use where
+/// `|s|² = 0`.
+#[inline(always)]
+fn half_vector(wo: Vec3, wi: Vec3, etap: f32) -> (Vec3, f64) {
+    let e = f64::from(etap);
+    let s = [
+        f64::from(wo.x) + e * f64::from(wi.x),
+        f64::from(wo.y) + e * f64::from(wi.y),
+        f64::from(wo.z) + e * f64::from(wi.z),
+    ];
+    let len2 = s[0] * s[0] + s[1] * s[1] + s[2] * s[2];
+    let scale = 1.0 / crate::math::sqrt_f64(len2) * if s[2] < 0.0 { -1.0 } else { 1.0 };
+    let h = Vec3::new(
+        (s[0] * scale) as f32,
+        (s[1] * scale) as f32,
+        (s[2] * scale) as f32,
+    );
+    (h, len2)
+}
+
+/// The refraction Jacobian's denominator `(wi·h + (wo·h)/η')² = |s|²/η'²`, since `h ∥ s`: no
+/// cancellation.
+#[inline(always)]
+fn jacobian_denominator(len2: f64, etap: f32) -> f32 {
+    let e = f64::from(etap);
+    (len2 / (e * e)) as f32
+}
+
 /// How a microfacet connects a pair of directions.
 struct Configuration {
     /// The microfacet normal, upper hemisphere.
@@ -246,8 +285,7 @@ impl<D: NormalDistribution> RoughDielectric<D> {
     /// [`Prepare::eval_prepared`] under `masking`.
     #[inline(always)]
     pub(crate) fn eval_with(&self, at: &At<View>, wi: Vec3, masking: Masking) -> f32 {
-        // `match` rather than `map_or`: a closure is not always inlined, and a call would
-        // keep a batched loop from vectorising.
+        // `match` rather than `map_or`: a closure is not always inlined.
         match self.configuration(at.wo, wi) {
             Some(c) => {
                 let d = self.distribution.d(c.h);
@@ -255,6 +293,18 @@ impl<D: NormalDistribution> RoughDielectric<D> {
             }
             None => 0.0,
         }
+    }
+
+    /// [`eval_with`](Self::eval_with) for a batched loop, the same numbers: every lane
+    /// computes a value and an unusable pair's is discarded, so that the loop has no branch
+    /// to turn into selects ([`configuration_of_lane`](Self::configuration_of_lane)). A
+    /// scalar call skips that work instead.
+    #[inline(always)]
+    pub(crate) fn eval_lane(&self, at: &At<View>, wi: Vec3, masking: Masking) -> f32 {
+        let (c, usable) = self.configuration_of_lane(at.wo, wi);
+        let d = self.distribution.d(c.h);
+        let f = self.value(at, wi, &c, d, || self.fresnel(at.wo, &c), masking);
+        if usable { f } else { 0.0 }
     }
 
     /// [`Prepare::eval_pdf_prepared`] under `masking`.
@@ -272,7 +322,11 @@ impl<D: NormalDistribution> RoughDielectric<D> {
         }
     }
 
-    /// [`Prepare::sample_prepared`] under `masking`.
+    /// [`Prepare::sample_prepared`] under `masking`, without early returns but for the
+    /// index-matched interface (the same for every lane of a batch), so that a batched loop
+    /// has no branch to turn into selects: both directions are formed and the one `uc` picks
+    /// is kept, and a refused sample is refused at the end. (A sample is seldom refused, so a
+    /// scalar call does little work in vain: the refraction when it reflects.)
     #[inline(always)]
     pub(crate) fn sample_with(
         &self,
@@ -282,43 +336,48 @@ impl<D: NormalDistribution> RoughDielectric<D> {
         masking: Masking,
     ) -> Option<BxdfSample<f32>> {
         let wo = at.wo;
-        if wo.z == 0.0 {
-            return None;
-        }
         if self.index_matched() {
-            return Self::pass_through(wo);
+            return if wo.z == 0.0 {
+                None
+            } else {
+                Self::pass_through(wo)
+            };
         }
         let m = self.distribution.sample(&at.state, u);
-        let f = dielectric(wo.dot(m), self.eta);
-        let reflect = crate::sampling::picks(uc, f);
+        let reflect = crate::sampling::picks(uc, dielectric(wo.dot(m), self.eta));
+        let (refracted, refracts) = refract_away_lane(wo, m, self.eta);
         let wi = if reflect {
             reflect_away(wo, m)
         } else {
-            refract_away(wo, m, self.eta)?
+            refracted
         };
-        // Evaluate at the configuration of (wo, wi), as `eval` and `pdf` do.
-        let c = self.configuration(wo, wi)?;
-        if c.reflection != reflect {
-            return None;
-        }
-        // D and F(wo·h) once, for both the value and the density.
+        // Evaluate at the configuration of (wo, wi), as `eval` and `pdf` do; D and F(wo·h)
+        // once, for both the value and the density.
+        let (c, usable) = self.configuration_of_lane(wo, wi);
         let (d, f_wo) = (self.distribution.d(c.h), self.fresnel(wo, &c));
         let pdf = self.density(at, wi, &c, d, f_wo);
-        if !usable_pdf(pdf) {
-            return None;
-        }
+        let f = self.value(at, wi, &c, d, || f_wo, masking);
         let (lobe, eta) = if c.reflection {
             (Lobes::GLOSSY_REFLECTION, 1.0)
         } else {
             (Lobes::GLOSSY_TRANSMISSION, c.etap)
         };
-        Some(BxdfSample {
-            wi,
-            f: self.value(at, wi, &c, d, || f_wo, masking),
-            pdf,
-            lobe,
-            eta,
-        })
+        let kept = wo.z != 0.0
+            && (reflect || refracts)
+            && usable
+            && c.reflection == reflect
+            && usable_pdf(pdf);
+        if kept {
+            Some(BxdfSample {
+                wi,
+                f,
+                pdf,
+                lobe,
+                eta,
+            })
+        } else {
+            None
+        }
     }
 
     /// The masking-shadowing term.
