@@ -355,7 +355,8 @@ pub fn erf_inv(x: f32) -> f32 {
 
 /// Giles' single-precision approximation of [`erf_inv`] without its Newton polish (a
 /// relative error of a few 1e-7, up to 1.04e-6 for `|x|` within 1e-6 of 1): for a sampler
-/// that refines the result itself, or that needs no more than the `f32` rounding of its input. `±∞` at `±1`, NaN outside `[-1, 1]`.
+/// that refines the result itself, or that needs no more than the `f32` rounding of its input.
+/// `±∞` at `±1`, NaN outside `[-1, 1]`.
 #[inline]
 #[must_use]
 pub(crate) fn erf_inv_approx(x: f32) -> f32 {

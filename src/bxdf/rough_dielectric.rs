@@ -135,10 +135,7 @@ impl<D: NormalDistribution> RoughDielectric<D> {
     /// microfacet can.
     #[inline(always)]
     fn configuration(&self, wo: Vec3, wi: Vec3) -> Option<Configuration> {
-        // Also refuses a pair whose product of cosines underflows (subnormal cos θ), where
-        // the value would be 0/0; and every pair of an index-matched interface, whose only
-        // lobe is the delta of `−wo`.
-        if (wo.z * wi.z).abs() < f32::MIN_POSITIVE || self.index_matched() {
+        if self.refuses(wo, wi) {
             return None;
         }
         let reflection = wo.z * wi.z > 0.0;
@@ -147,8 +144,7 @@ impl<D: NormalDistribution> RoughDielectric<D> {
         if !(len2 > 0.0) {
             return None;
         }
-        // Each direction must see the microfacet from its own side of the macro-surface.
-        if wo.dot(h) * wo.z <= 0.0 || wi.dot(h) * wi.z <= 0.0 {
+        if !sees_from_its_side(wo, wi, h) {
             return None;
         }
         Some(Configuration {
@@ -169,9 +165,7 @@ impl<D: NormalDistribution> RoughDielectric<D> {
         let reflection = wo.z * wi.z > 0.0;
         let etap = if reflection { 1.0 } else { self.etap(wo) };
         let (h, len2) = half_vector(wo, wi, etap);
-        let usable = !((wo.z * wi.z).abs() < f32::MIN_POSITIVE || self.index_matched())
-            && len2 > 0.0
-            && !(wo.dot(h) * wo.z <= 0.0 || wi.dot(h) * wi.z <= 0.0);
+        let usable = !self.refuses(wo, wi) && len2 > 0.0 && sees_from_its_side(wo, wi, h);
         let c = Configuration {
             h: if usable { h } else { Vec3::Z },
             reflection,
@@ -183,6 +177,14 @@ impl<D: NormalDistribution> RoughDielectric<D> {
             },
         };
         (c, usable)
+    }
+
+    /// Whether no microfacet connects the pair whatever its half vector: a pair whose product
+    /// of cosines underflows (subnormal cos θ), where the value would be 0/0, and every pair
+    /// of an index-matched interface, whose only lobe is the delta of `−wo`.
+    #[inline(always)]
+    fn refuses(&self, wo: Vec3, wi: Vec3) -> bool {
+        (wo.z * wi.z).abs() < f32::MIN_POSITIVE || self.index_matched()
     }
 
     /// The Fresnel reflectance `F(wo·h)` of a configuration, which chooses between the lobes.
@@ -259,6 +261,12 @@ fn half_vector(wo: Vec3, wi: Vec3, etap: f32) -> (Vec3, f64) {
         (s[2] * scale) as f32,
     );
     (h, len2)
+}
+
+/// Whether each direction sees the microfacet `h` from its own side of the macro-surface.
+#[inline(always)]
+fn sees_from_its_side(wo: Vec3, wi: Vec3, h: Vec3) -> bool {
+    !(wo.dot(h) * wo.z <= 0.0 || wi.dot(h) * wi.z <= 0.0)
 }
 
 /// The refraction Jacobian's denominator `(wi·h + (wo·h)/η')² = |s|²/η'²`, since `h ∥ s`: no
