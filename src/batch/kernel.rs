@@ -91,7 +91,7 @@ where
 
 /// Re-slices a [`Vec3s`] to `n` lanes, in the loop's own function.
 #[inline(always)]
-fn cut(v: Vec3s<'_>, n: usize) -> Vec3s<'_> {
+pub(super) fn cut(v: Vec3s<'_>, n: usize) -> Vec3s<'_> {
     Vec3s {
         x: &v.x[..n],
         y: &v.y[..n],

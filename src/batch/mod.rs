@@ -126,6 +126,7 @@ mod isa;
 mod kernel;
 mod lanes;
 mod models;
+mod tabulated;
 
 pub use isa::{InstructionSet, instruction_set};
 pub use lanes::{Lanes, Vec2s, Vec3s, Vec3sMut, Vec4sMut};

@@ -13,10 +13,12 @@ use crate::microfacet::NormalDistribution;
 use crate::spectrum::Spectrum;
 
 use super::kernel::{LaneOp, Plain};
+use super::tabulated::{TableLanes, TableOp, table_eval, table_pdf};
 use super::{Lanes, LengthError, SampleOut, Vec2s, Vec3s, eval_with, sample_with};
 use crate::bxdf::{At, BxdfSample, CompensatedState, Prepare};
 use crate::microfacet::Masking;
 use crate::microfacet::View;
+use crate::tables::AlbedoRow;
 use glam::{Vec2, Vec3};
 
 impl<S: Spectrum + Lanes> Batch for Lambert<S> {}
@@ -165,8 +167,62 @@ macro_rules! batch_by_masking {
 
 batch_by_masking!(impl<D: NormalDistribution + Clone, F: Fresnel> for Microfacet<D, F> where F::Spectrum);
 batch_by_masking!(impl<D: NormalDistribution + Clone> for RoughDielectric<D> where f32);
-batch_by_masking!(impl<D: NormalDistribution + Clone, F: FresnelAverage>
-    for CompensatedMicrofacet<D, F> where F::Spectrum);
+
+impl<D: NormalDistribution, F: FresnelAverage> TableLanes for CompensatedMicrofacet<D, F> {
+    #[inline(always)]
+    fn row(&self) -> &AlbedoRow {
+        self.albedo()
+    }
+
+    #[inline(always)]
+    fn prepare_given(&self, wo: Vec3, e_wo: f32) -> Self::Prepared {
+        CompensatedMicrofacet::prepare_given(self, wo, || e_wo)
+    }
+}
+
+impl<const K: usize, D: NormalDistribution, F: FresnelAverage> TableOp<CompensatedMicrofacet<D, F>>
+    for FixedMasking<K>
+{
+    #[inline(always)]
+    fn eval(
+        m: &CompensatedMicrofacet<D, F>,
+        at: &CompensatedState<At<View>, F::Spectrum>,
+        wi: Vec3,
+        e_wi: f32,
+    ) -> F::Spectrum {
+        m.eval_given::<true>(at, wi, MASKINGS[K], || e_wi)
+    }
+}
+
+/// The compensated microfacet model's `eval` and `pdf` look its albedo table up a chunk of
+/// lanes at a time ([`super::tabulated`]); its `sample` runs as the plain model's does.
+impl<D: NormalDistribution + Clone, F: FresnelAverage> Batch for CompensatedMicrofacet<D, F>
+where
+    F::Spectrum: Lanes,
+{
+    fn eval_batch(
+        &self,
+        wo: Vec3s<'_>,
+        wi: Vec3s<'_>,
+        f: <F::Spectrum as Lanes>::Mut<'_>,
+    ) -> Result<(), LengthError> {
+        by_masking!(self, table_eval(wo, wi, f))
+    }
+
+    fn pdf_batch(&self, wo: Vec3s<'_>, wi: Vec3s<'_>, pdf: &mut [f32]) -> Result<(), LengthError> {
+        table_pdf(self, wo, wi, pdf)
+    }
+
+    fn sample_batch(
+        &self,
+        wo: Vec3s<'_>,
+        u: Vec2s<'_>,
+        uc: &[f32],
+        out: SampleOut<'_, F::Spectrum>,
+    ) -> Result<(), LengthError> {
+        by_masking!(self, sample_with(wo, u, uc, out))
+    }
+}
 batch_by_masking!(impl<D: NormalDistribution + Clone> for CompensatedDielectric<D> where f32);
 
 /// A plastic's coat calls with the coat's masking term fixed (height-correlated): the

@@ -228,10 +228,41 @@ impl<D: NormalDistribution, F: FresnelAverage> CompensatedMicrofacet<D, F> {
     }
 
     /// The compensation lobe's value for `wo`, `wi` above the surface, given the factor at
-    /// `wo`.
+    /// `wo` and `E(μi)`.
     #[inline(always)]
-    fn lobe(&self, outgoing: F::Spectrum, wi: Vec3) -> F::Spectrum {
-        outgoing * (1.0 - self.albedo.e(wi.z))
+    fn lobe(outgoing: F::Spectrum, e_wi: f32) -> F::Spectrum {
+        outgoing * (1.0 - e_wi)
+    }
+
+    /// [`Prepare::prepare`] with `E(μo)` from `e_wo` (called only for `wo` above the
+    /// surface): the table's value there, or, in a batched loop, that value looked up for a
+    /// chunk of lanes beforehand ([`AlbedoRow::e_chunk`]).
+    #[inline(always)]
+    pub(crate) fn prepare_given(
+        &self,
+        wo: Vec3,
+        e_wo: impl FnOnce() -> f32,
+    ) -> CompensatedState<At<View>, F::Spectrum> {
+        let inner = self.inner.prepare(wo);
+        let e = if wo.z > 0.0 { e_wo() } else { 1.0 };
+        let (outgoing, share) = match self.compensation {
+            Compensation::KullaConty => (self.factor * (1.0 - e), 1.0 - e),
+            Compensation::Turquin => {
+                // E below 1e-4 (only a table of your own has it) is held there, so that the
+                // factor stays finite.
+                let scale = if e > 0.0 {
+                    1.0 / e.max(1e-4) - 1.0
+                } else {
+                    0.0
+                };
+                (F::Spectrum::one() + self.factor * scale, 0.0)
+            }
+        };
+        CompensatedState {
+            inner,
+            outgoing,
+            probability: self.probability(share),
+        }
     }
 
     /// The inner model's masking term (what a batched loop fixes outside the loop).
@@ -250,10 +281,23 @@ impl<D: NormalDistribution, F: FresnelAverage> CompensatedMicrofacet<D, F> {
         wi: Vec3,
         masking: Masking,
     ) -> F::Spectrum {
+        self.eval_given::<PER_CHANNEL>(at, wi, masking, || self.albedo.e(wi.z))
+    }
+
+    /// [`eval_with`](Self::eval_with) with `E(μi)` from `e_wi` (called only for a pair above
+    /// the surface), as [`prepare_given`](Self::prepare_given) takes `E(μo)`.
+    #[inline(always)]
+    pub(crate) fn eval_given<const PER_CHANNEL: bool>(
+        &self,
+        at: &CompensatedState<At<View>, F::Spectrum>,
+        wi: Vec3,
+        masking: Masking,
+        e_wi: impl FnOnce() -> f32,
+    ) -> F::Spectrum {
         let f = self.inner.eval_with::<PER_CHANNEL>(&at.inner, wi, masking);
         match self.compensation {
             Compensation::KullaConty if both_above(at.inner.wo, wi) => {
-                f + self.lobe(at.outgoing, wi)
+                f + Self::lobe(at.outgoing, e_wi())
             }
             Compensation::KullaConty => f,
             Compensation::Turquin => Self::turquin(f, at.outgoing),
@@ -275,7 +319,7 @@ impl<D: NormalDistribution, F: FresnelAverage> CompensatedMicrofacet<D, F> {
         let p = at.probability;
         match self.compensation {
             Compensation::KullaConty if both_above(at.inner.wo, wi) => (
-                f + self.lobe(at.outgoing, wi),
+                f + Self::lobe(at.outgoing, self.albedo.e(wi.z)),
                 (1.0 - p) * pdf + p * cosine_hemisphere_pdf(wi.z),
             ),
             Compensation::KullaConty => (f, (1.0 - p) * pdf),
@@ -340,7 +384,7 @@ impl<D: NormalDistribution, F: FresnelAverage> CompensatedMicrofacet<D, F> {
         }
         Some(BxdfSample::new(
             wi,
-            f + self.lobe(at.outgoing, wi),
+            f + Self::lobe(at.outgoing, self.albedo.e(wi.z)),
             pdf,
             lobe,
         ))
@@ -353,26 +397,7 @@ impl<D: NormalDistribution, F: FresnelAverage> Prepare for CompensatedMicrofacet
 
     #[inline(always)]
     fn prepare(&self, wo: Vec3) -> Self::Prepared {
-        let inner = self.inner.prepare(wo);
-        let e = if wo.z > 0.0 { self.albedo.e(wo.z) } else { 1.0 };
-        let (outgoing, share) = match self.compensation {
-            Compensation::KullaConty => (self.factor * (1.0 - e), 1.0 - e),
-            Compensation::Turquin => {
-                // E below 1e-4 (only a table of your own has it) is held there, so that the
-                // factor stays finite.
-                let scale = if e > 0.0 {
-                    1.0 / e.max(1e-4) - 1.0
-                } else {
-                    0.0
-                };
-                (F::Spectrum::one() + self.factor * scale, 0.0)
-            }
-        };
-        CompensatedState {
-            inner,
-            outgoing,
-            probability: self.probability(share),
-        }
+        self.prepare_given(wo, || self.albedo.e(wo.z))
     }
 
     #[inline(always)]

@@ -80,10 +80,33 @@ impl AlbedoRow {
     #[inline(always)]
     #[must_use]
     pub fn e(&self, mu: f32) -> f32 {
-        let mu = if mu > 0.0 { mu.min(1.0) } else { 0.0 };
-        let x = crate::math::sqrt(mu) * (MU_NODES - 1) as f32;
-        let i = (x as usize).min(MU_NODES - 2);
-        let t = x - i as f32;
+        let (i, t) = position(mu);
+        self.between(i as usize, t)
+    }
+
+    /// `E(μ)` of every `mu[k]`, into `e[k]` (`mu` has at most [`CHUNK`] lanes; the rest of
+    /// `e` is left as it is): the numbers of [`e`](Self::e), in two passes, the positions
+    /// first, then the reads of the row. A batched loop looks a chunk of lanes up this way
+    /// before its own pass: the positions vectorise, and the pass that reads the table at
+    /// each lane's node is a short loop of its own, out of the way of the model's arithmetic
+    /// (a read at a different place per lane, a gather, keeps LLVM from vectorising a whole
+    /// loop on a target with AVX2 and no AVX-512).
+    #[inline(always)]
+    pub(crate) fn e_chunk(&self, mu: &[f32], e: &mut [f32; CHUNK]) {
+        let mut node = [0_u32; CHUNK];
+        for ((&mu, e), node) in mu.iter().zip(e.iter_mut()).zip(node.iter_mut()) {
+            let (i, t) = position(mu);
+            (*node, *e) = (i, t);
+        }
+        for (e, &i) in e.iter_mut().zip(&node).take(mu.len()) {
+            *e = self.between(i as usize, *e);
+        }
+    }
+
+    /// The interpolant at `t ∈ [0, 1]` of the way from node `i` to node `i + 1`.
+    #[inline(always)]
+    fn between(&self, i: usize, t: f32) -> f32 {
+        let i = i.min(MU_NODES - 2);
         let (a, b) = (self.e[i], self.e[i + 1]);
         a + t * (b - a)
     }
@@ -101,6 +124,23 @@ impl AlbedoRow {
     pub fn nodes(&self) -> &[f32; MU_NODES] {
         &self.e
     }
+}
+
+/// How many lanes [`AlbedoRow::e_chunk`] looks up at once.
+pub(crate) const CHUNK: usize = 256;
+
+/// The node `i` below `μ` and the fraction `t` of the way to the next, for `x = √μ`
+/// ([`AlbedoRow::e`]); `μ` outside `[0, 1]` (or NaN) is clamped to it.
+#[inline(always)]
+fn position(mu: f32) -> (u32, f32) {
+    let mu = if mu > 0.0 { mu.min(1.0) } else { 0.0 };
+    let x = crate::math::sqrt(mu) * (MU_NODES - 1) as f32;
+    let node = crate::math::floor(x).min((MU_NODES - 2) as f32);
+    // `node` is a whole number in [0, 63]: `2²³ + node` is exact, and its bits below the
+    // exponent's are `node`. So the index comes without a float-to-integer conversion, whose
+    // saturating form (NaN to 0) LLVM splits into one scalar conversion per lane on AVX2.
+    let i = (node + 8_388_608.0).to_bits() - 0x4B00_0000;
+    (i, x - node)
 }
 
 /// `2 ∫₀¹ E(μ) μ dμ = 4 ∫₀¹ E(x) x³ dx` for `E` linear in `x = √μ` between the nodes, in
