@@ -13,9 +13,9 @@ use crate::microfacet::NormalDistribution;
 use crate::spectrum::Spectrum;
 
 use super::kernel::{LaneOp, Plain};
-use super::tabulated::{TableLanes, TableOp, table_eval, table_pdf};
+use super::tabulated::{TableLanes, TableOp, table_eval, table_pdf, table_sample};
 use super::{Lanes, LengthError, SampleOut, Vec2s, Vec3s, eval_with, sample_with};
-use crate::bxdf::{At, BxdfSample, CompensatedState, Prepare};
+use crate::bxdf::{At, BxdfSample, CompensatedState, Compensation, Prepare};
 use crate::microfacet::Masking;
 use crate::microfacet::View;
 use crate::tables::AlbedoRow;
@@ -46,8 +46,6 @@ impl<T: LayerInterface + Clone, B: Bxdf + Clone> Batch for Layered<T, B> where B
 /// A model whose value depends on a masking term chosen at run time: the batched loops fix
 /// it at compile time, so that the loop does not branch on it.
 trait Masked: Prepare {
-    /// The model's masking term.
-    fn masking_term(&self) -> Masking;
     /// `eval` under `masking`.
     fn eval_masked(&self, wo: Vec3, wi: Vec3, masking: Masking) -> Self::Spectrum;
     /// `sample` under `masking`.
@@ -67,11 +65,6 @@ macro_rules! masked {
     (impl<$($g:ident: $b:path),*> for $t:ty =>
         $eval:ident $(::<$ef:tt>)?, $sample:ident $(::<$sf:tt>)?) => {
         impl<$($g: $b),*> Masked for $t {
-            #[inline(always)]
-            fn masking_term(&self) -> Masking {
-                self.masking()
-            }
-
             #[inline(always)]
             fn eval_masked(&self, wo: Vec3, wi: Vec3, masking: Masking) -> Self::Spectrum {
                 self.$eval$(::<$ef>)?(&self.prepare(wo), wi, masking)
@@ -94,8 +87,6 @@ macro_rules! masked {
 masked!(impl<D: NormalDistribution, F: Fresnel> for Microfacet<D, F> =>
     eval_with::<true>, sample_with::<true>);
 masked!(impl<D: NormalDistribution> for RoughDielectric<D> => eval_lane, sample_with);
-masked!(impl<D: NormalDistribution, F: FresnelAverage> for CompensatedMicrofacet<D, F> =>
-    eval_with::<true>, sample_with::<true>);
 masked!(impl<D: NormalDistribution> for CompensatedDielectric<D> => eval_with, sample_with);
 
 /// A [`Masked`] model's lanes with the masking term `MASKINGS[K]`.
@@ -128,7 +119,7 @@ impl<const K: usize, M: Masked> LaneOp<M> for FixedMasking<K> {
 /// Chooses the loop for the model's masking term.
 macro_rules! by_masking {
     ($m:expr, $run:ident($($arg:expr),*)) => {
-        match $m.masking_term() {
+        match $m.masking() {
             Masking::HeightCorrelated => $run::<_, FixedMasking<0>>($m, $($arg),*),
             Masking::Separable => $run::<_, FixedMasking<1>>($m, $($arg),*),
             Masking::VCavity => $run::<_, FixedMasking<2>>($m, $($arg),*),
@@ -178,6 +169,21 @@ impl<D: NormalDistribution, F: FresnelAverage> TableLanes for CompensatedMicrofa
     fn prepare_given(&self, wo: Vec3, e_wo: f32) -> Self::Prepared {
         CompensatedMicrofacet::prepare_given(self, wo, || e_wo)
     }
+
+    #[inline(always)]
+    fn unfinished(&self) -> bool {
+        self.compensation() == Compensation::KullaConty
+    }
+
+    #[inline(always)]
+    fn outgoing(at: &Self::Prepared) -> F::Spectrum {
+        at.outgoing
+    }
+
+    #[inline(always)]
+    fn finish(&self, f: F::Spectrum, outgoing: F::Spectrum, e_wi: f32) -> F::Spectrum {
+        CompensatedMicrofacet::finish(self, f, outgoing, e_wi)
+    }
 }
 
 impl<const K: usize, D: NormalDistribution, F: FresnelAverage> TableOp<CompensatedMicrofacet<D, F>>
@@ -191,6 +197,16 @@ impl<const K: usize, D: NormalDistribution, F: FresnelAverage> TableOp<Compensat
         e_wi: f32,
     ) -> F::Spectrum {
         m.eval_given::<true>(at, wi, MASKINGS[K], || e_wi)
+    }
+
+    #[inline(always)]
+    fn sample(
+        m: &CompensatedMicrofacet<D, F>,
+        at: &CompensatedState<At<View>, F::Spectrum>,
+        u: Vec2,
+        uc: f32,
+    ) -> Option<BxdfSample<F::Spectrum>> {
+        m.sample_unfinished::<true>(at, u, uc, MASKINGS[K])
     }
 }
 
@@ -220,7 +236,7 @@ where
         uc: &[f32],
         out: SampleOut<'_, F::Spectrum>,
     ) -> Result<(), LengthError> {
-        by_masking!(self, sample_with(wo, u, uc, out))
+        by_masking!(self, table_sample(wo, u, uc, out))
     }
 }
 batch_by_masking!(impl<D: NormalDistribution + Clone> for CompensatedDielectric<D> where f32);

@@ -10,25 +10,37 @@
 //! arithmetic, in another order of lanes.
 
 use super::kernel::{Kernel, cut, dispatch};
-use super::lanes::{Lanes, Vec3s};
-use super::{LengthError, same_length};
-use crate::bxdf::Prepare;
+use super::lanes::{Lanes, Vec2s, Vec3s, Vec3sMut};
+use super::{LengthError, SampleOut, same_length};
+use crate::bxdf::{BxdfSample, Lobes, Prepare};
+use crate::spectrum::Spectrum;
 use crate::tables::{AlbedoRow, CHUNK};
 use core::marker::PhantomData;
-use glam::Vec3;
+use glam::{Vec2, Vec3};
 
-/// A model whose prepared state reads one [`AlbedoRow`] at `μo = wo.z`.
+/// A model whose prepared state reads one [`AlbedoRow`] at `μo = wo.z`, whose value reads it
+/// at `μi = wi.z`, and whose sample, drawn, may be left unfinished for want of the row's
+/// value at the sampled direction.
 pub(crate) trait TableLanes: Prepare {
     /// The row read at each lane's directions.
     fn row(&self) -> &AlbedoRow;
     /// [`Prepare::prepare`] with the row's value at `wo.z` given as `e_wo`.
     fn prepare_given(&self, wo: Vec3, e_wo: f32) -> Self::Prepared;
+    /// Whether [`TableOp::sample`] leaves its samples unfinished.
+    fn unfinished(&self) -> bool;
+    /// What [`finish`](Self::finish) needs of the prepared state.
+    fn outgoing(at: &Self::Prepared) -> Self::Spectrum;
+    /// An unfinished sample's value, from its value `f` as drawn, what it needs of the
+    /// prepared state, and the row's value `e_wi` at the sampled direction's `wi.z`.
+    fn finish(&self, f: Self::Spectrum, outgoing: Self::Spectrum, e_wi: f32) -> Self::Spectrum;
 }
 
-/// How one lane's value is computed from the prepared state and the row's value at `wi.z`.
+/// How one lane is computed from the prepared state (and the row's value at `wi.z`).
 pub(crate) trait TableOp<M: TableLanes> {
     /// `eval(wo, wi)`, with `e_wi` the row's value at `wi.z`.
     fn eval(m: &M, at: &M::Prepared, wi: Vec3, e_wi: f32) -> M::Spectrum;
+    /// `sample(wo, u, uc)`, unfinished where [`TableLanes::unfinished`] says so.
+    fn sample(m: &M, at: &M::Prepared, u: Vec2, uc: f32) -> Option<BxdfSample<M::Spectrum>>;
 }
 
 /// The chunks of `0..n`, as `(start, end)`.
@@ -100,6 +112,81 @@ impl<M: TableLanes + Clone> Kernel for TablePdfKernel<'_, '_, M> {
     }
 }
 
+/// `(wi, f, pdf, lobe, eta)[k] = sample(wo[k], u[k], uc[k])` over the first `n` lanes, zeros
+/// (and [`Lobes::NONE`]) for no sample, a chunk at a time: the row at `wo.z`, the samples, the
+/// row at the sampled directions' `wi.z` (where the samples are unfinished), their values.
+pub(crate) struct TableSampleKernel<'a, 'f, M: Prepare, O>
+where
+    M::Spectrum: Lanes,
+{
+    pub(super) m: &'a M,
+    pub(super) wo: Vec3s<'a>,
+    pub(super) u: Vec2s<'a>,
+    pub(super) uc: &'a [f32],
+    pub(super) out: SampleOut<'f, M::Spectrum>,
+    pub(super) n: usize,
+    pub(super) op: PhantomData<O>,
+}
+
+impl<M: TableLanes + Clone, O: TableOp<M>> Kernel for TableSampleKernel<'_, '_, M, O>
+where
+    M::Spectrum: Lanes,
+{
+    #[inline(always)]
+    fn run(self) {
+        let n = self.n;
+        let wo = cut(self.wo, n);
+        let u = Vec2s {
+            x: &self.u.x[..n],
+            y: &self.u.y[..n],
+        };
+        let uc = &self.uc[..n];
+        let SampleOut {
+            wi,
+            f,
+            pdf,
+            lobe,
+            eta,
+        } = self.out;
+        let (mut wi, mut f): (Vec3sMut<'_>, _) = (wi.truncate(n), M::Spectrum::truncate(f, n));
+        let (pdf, lobe, eta) = (&mut pdf[..n], &mut lobe[..n], &mut eta[..n]);
+        let m = self.m.clone();
+        let unfinished = m.unfinished();
+        let (mut e_wo, mut e_wi) = ([0.0; CHUNK], [0.0; CHUNK]);
+        // Per lane of the chunk: the value as drawn, what finishing it needs, and whether
+        // there is a sample.
+        let mut drawn = [M::Spectrum::zero(); CHUNK];
+        let mut outgoing = [M::Spectrum::zero(); CHUNK];
+        let mut sampled = [false; CHUNK];
+        for (start, end) in chunks(n) {
+            m.row().e_chunk(&wo.z[start..end], &mut e_wo);
+            for (j, k) in (start..end).enumerate() {
+                let at = m.prepare_given(wo.get(k), e_wo[j]);
+                let (w, v, p, l, e) = match O::sample(&m, &at, u.get(k), uc[k]) {
+                    Some(s) => (s.wi, s.f, s.pdf, s.lobe, s.eta),
+                    None => (Vec3::ZERO, M::Spectrum::zero(), 0.0, Lobes::NONE, 0.0),
+                };
+                wi.put(k, w);
+                pdf[k] = p;
+                lobe[k] = l;
+                eta[k] = e;
+                (drawn[j], outgoing[j], sampled[j]) = (v, M::outgoing(&at), l != Lobes::NONE);
+            }
+            if unfinished {
+                m.row().e_chunk(&wi.z[start..end], &mut e_wi);
+            }
+            for (j, k) in (start..end).enumerate() {
+                let v = if unfinished && sampled[j] {
+                    m.finish(drawn[j], outgoing[j], e_wi[j])
+                } else {
+                    drawn[j]
+                };
+                M::Spectrum::put(&mut f, k, v);
+            }
+        }
+    }
+}
+
 /// [`Batch::eval_batch`](super::Batch::eval_batch) through [`TableEvalKernel`] with the lane
 /// operation `O`.
 #[inline(always)]
@@ -135,5 +222,41 @@ pub(super) fn table_pdf<M: TableLanes + Clone>(
 ) -> Result<(), LengthError> {
     let n = same_length(&[wo.lanes()?, wi.lanes()?, pdf.len()])?;
     dispatch(TablePdfKernel { m, wo, wi, pdf, n });
+    Ok(())
+}
+
+/// [`Batch::sample_batch`](super::Batch::sample_batch) through [`TableSampleKernel`] with the
+/// lane operation `O`.
+#[inline(always)]
+pub(super) fn table_sample<M: TableLanes + Clone, O: TableOp<M>>(
+    m: &M,
+    wo: Vec3s<'_>,
+    u: Vec2s<'_>,
+    uc: &[f32],
+    out: SampleOut<'_, M::Spectrum>,
+) -> Result<(), LengthError>
+where
+    M::Spectrum: Lanes,
+{
+    let n = same_length(&[
+        wo.lanes()?,
+        u.lanes()?,
+        uc.len(),
+        out.wi.lanes()?,
+        M::Spectrum::lanes(&out.f)?,
+        out.pdf.len(),
+        out.lobe.len(),
+        out.eta.len(),
+    ])?;
+    let op = PhantomData::<O>;
+    dispatch(TableSampleKernel {
+        m,
+        wo,
+        u,
+        uc,
+        out,
+        n,
+        op,
+    });
     Ok(())
 }

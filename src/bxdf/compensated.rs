@@ -340,6 +340,37 @@ impl<D: NormalDistribution, F: FresnelAverage> CompensatedMicrofacet<D, F> {
         uc: f32,
         masking: Masking,
     ) -> Option<BxdfSample<F::Spectrum>> {
+        let s = self.sample_unfinished::<LANES>(at, u, uc, masking)?;
+        Some(match self.compensation {
+            Compensation::KullaConty => BxdfSample {
+                f: self.finish(s.f, at.outgoing, self.albedo.e(s.wi.z)),
+                ..s
+            },
+            Compensation::Turquin => s,
+        })
+    }
+
+    /// The value of a sample that [`sample_unfinished`](Self::sample_unfinished) left
+    /// unfinished (Kulla & Conty's): its single-scattering value `f` and the compensation
+    /// lobe's, from the factor `outgoing` at `wo` and `E(μi)` at the sampled direction.
+    #[inline(always)]
+    pub(crate) fn finish(&self, f: F::Spectrum, outgoing: F::Spectrum, e_wi: f32) -> F::Spectrum {
+        f + Self::lobe(outgoing, e_wi)
+    }
+
+    /// [`sample_with`](Self::sample_with) but for the table's `E(μi)` at the sampled
+    /// direction: under Kulla & Conty's compensation, the sample's `f` is the
+    /// single-scattering lobe's value alone, to [`finish`](Self::finish); under Turquin's
+    /// scaling the sample is complete. A batched loop looks the table up at the sampled
+    /// directions of a chunk of lanes in between.
+    #[inline(always)]
+    pub(crate) fn sample_unfinished<const LANES: bool>(
+        &self,
+        at: &CompensatedState<At<View>, F::Spectrum>,
+        u: Vec2,
+        uc: f32,
+        masking: Masking,
+    ) -> Option<BxdfSample<F::Spectrum>> {
         let inner = &self.inner;
         if self.compensation == Compensation::Turquin {
             let mut s = inner.sample_with::<LANES>(&at.inner, u, uc, masking)?;
@@ -382,12 +413,7 @@ impl<D: NormalDistribution, F: FresnelAverage> CompensatedMicrofacet<D, F> {
         if !usable_pdf(pdf) {
             return None;
         }
-        Some(BxdfSample::new(
-            wi,
-            f + Self::lobe(at.outgoing, self.albedo.e(wi.z)),
-            pdf,
-            lobe,
-        ))
+        Some(BxdfSample::new(wi, f, pdf, lobe))
     }
 }
 
