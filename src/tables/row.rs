@@ -134,12 +134,18 @@ pub(crate) const CHUNK: usize = 256;
 #[inline(always)]
 fn position(mu: f32) -> (u32, f32) {
     let mu = if mu > 0.0 { mu.min(1.0) } else { 0.0 };
+    const TWO_23: f32 = 8_388_608.0;
     let x = crate::math::sqrt(mu) * (MU_NODES - 1) as f32;
-    let node = crate::math::floor(x).min((MU_NODES - 2) as f32);
-    // `node` is a whole number in [0, 63]: `2²³ + node` is exact, and its bits below the
-    // exponent's are `node`. So the index comes without a float-to-integer conversion, whose
-    // saturating form (NaN to 0) LLVM splits into one scalar conversion per lane on AVX2.
-    let i = (node + 8_388_608.0).to_bits() - 0x4B00_0000;
+    // The whole part of x in [0, 64] and its index, by adding and taking away 2²³ (whose ulp
+    // is 1): `x + 2²³ − 2²³` is x rounded to the nearest whole number, one less where that
+    // rounded up; and the bits of `2²³ + node` below the exponent's are `node`. Neither a
+    // `floor` (a library call on x86-64's baseline, SSE2) nor a float-to-integer conversion
+    // (whose saturating form, NaN to 0, LLVM splits into one scalar conversion per lane on
+    // AVX2): adds, compares and selects, which vectorise.
+    let nearest = (x + TWO_23) - TWO_23;
+    let whole = if nearest > x { nearest - 1.0 } else { nearest };
+    let node = whole.min((MU_NODES - 2) as f32);
+    let i = (node + TWO_23).to_bits() - TWO_23.to_bits();
     (i, x - node)
 }
 
@@ -164,4 +170,69 @@ pub(crate) fn interpolant_average(e: &[f32]) -> f64 {
         }
     }
     4.0 * sum
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::vec;
+    use std::vec::Vec;
+
+    /// A row with nodes that differ from each other in every bit of interest.
+    fn row() -> AlbedoRow {
+        AlbedoRow::from_fn(|mu| 0.3 + 0.5 * mu - 0.2 * mu * mu).unwrap()
+    }
+
+    /// The lookup as the type's docs define it: the node below `x = 64 √μ` by a
+    /// float-to-integer conversion, held below the last, and the straight line between it
+    /// and the next.
+    fn by_definition(row: &AlbedoRow, mu: f32) -> f32 {
+        let mu = if mu > 0.0 { mu.min(1.0) } else { 0.0 };
+        let x = mu.sqrt() * (MU_NODES - 1) as f32;
+        let i = (x as usize).min(MU_NODES - 2);
+        let (a, b) = (row.nodes()[i], row.nodes()[i + 1]);
+        a + (x - i as f32) * (b - a)
+    }
+
+    /// Every `μ` the lookup distinguishes near the nodes, between them and outside `[0, 1]`.
+    fn mus() -> Vec<f32> {
+        let mut mus = vec![f32::NAN, f32::NEG_INFINITY, -1.0, -0.0, 0.0, 1.0, 1.5, f32::INFINITY];
+        for i in 0..MU_NODES {
+            let node = AlbedoRow::node(i);
+            let mut below = node;
+            let mut above = node;
+            for _ in 0..4 {
+                mus.extend([below, above]);
+                below = f32::from_bits(below.to_bits().saturating_sub(1));
+                above = f32::from_bits(above.to_bits() + 1);
+            }
+        }
+        mus.extend((0..=100_000).map(|k| k as f32 / 100_000.0));
+        mus
+    }
+
+    #[test]
+    fn lookup_is_the_interpolant_of_the_nodes_bit_for_bit() {
+        let row = row();
+        for mu in mus() {
+            let (got, want) = (row.e(mu), by_definition(&row, mu));
+            assert_eq!(got.to_bits(), want.to_bits(), "μ = {mu:e}: {got} against {want}");
+        }
+    }
+
+    #[test]
+    fn chunked_lookup_is_the_lookup() {
+        let row = row();
+        let mus = mus();
+        // Whole chunks and a short one.
+        for part in mus.chunks(CHUNK).chain([&mus[..3]]) {
+            let mut e = [f32::NAN; CHUNK];
+            row.e_chunk(part, &mut e);
+            for (k, &mu) in part.iter().enumerate() {
+                assert_eq!(e[k].to_bits(), row.e(mu).to_bits(), "μ = {mu:e}");
+            }
+            // Lanes past the input are left alone.
+            assert!(e[part.len()..].iter().all(|v| v.is_nan()));
+        }
+    }
 }
