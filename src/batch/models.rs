@@ -159,6 +159,20 @@ macro_rules! batch_by_masking {
 batch_by_masking!(impl<D: NormalDistribution + Clone, F: Fresnel> for Microfacet<D, F> where F::Spectrum);
 batch_by_masking!(impl<D: NormalDistribution + Clone> for RoughDielectric<D> where f32);
 
+/// Chooses a compensated model's loop for its masking term and compensation.
+macro_rules! by_compensation {
+    ($m:expr, $run:ident($($arg:expr),*)) => {
+        match ($m.masking(), $m.compensation() == Compensation::KullaConty) {
+            (Masking::HeightCorrelated, true) => $run::<_, FixedCompensation<0, true>>($m, $($arg),*),
+            (Masking::Separable, true) => $run::<_, FixedCompensation<1, true>>($m, $($arg),*),
+            (Masking::VCavity, true) => $run::<_, FixedCompensation<2, true>>($m, $($arg),*),
+            (Masking::HeightCorrelated, false) => $run::<_, FixedCompensation<0, false>>($m, $($arg),*),
+            (Masking::Separable, false) => $run::<_, FixedCompensation<1, false>>($m, $($arg),*),
+            (Masking::VCavity, false) => $run::<_, FixedCompensation<2, false>>($m, $($arg),*),
+        }
+    };
+}
+
 impl<D: NormalDistribution, F: FresnelAverage> TableLanes for CompensatedMicrofacet<D, F> {
     #[inline(always)]
     fn row(&self) -> &AlbedoRow {
@@ -186,8 +200,21 @@ impl<D: NormalDistribution, F: FresnelAverage> TableLanes for CompensatedMicrofa
     }
 }
 
-impl<const K: usize, D: NormalDistribution, F: FresnelAverage> TableOp<CompensatedMicrofacet<D, F>>
-    for FixedMasking<K>
+/// A compensated model's lanes with the masking term `MASKINGS[K]` and the compensation
+/// (Kulla & Conty's where `KULLA`, else Turquin's) fixed.
+struct FixedCompensation<const K: usize, const KULLA: bool>;
+
+impl<const K: usize, const KULLA: bool> FixedCompensation<K, KULLA> {
+    /// The compensation.
+    const COMPENSATION: Compensation = if KULLA {
+        Compensation::KullaConty
+    } else {
+        Compensation::Turquin
+    };
+}
+
+impl<const K: usize, const KULLA: bool, D: NormalDistribution, F: FresnelAverage>
+    TableOp<CompensatedMicrofacet<D, F>> for FixedCompensation<K, KULLA>
 {
     #[inline(always)]
     fn eval(
@@ -196,7 +223,7 @@ impl<const K: usize, D: NormalDistribution, F: FresnelAverage> TableOp<Compensat
         wi: Vec3,
         e_wi: f32,
     ) -> F::Spectrum {
-        m.eval_given::<true>(at, wi, MASKINGS[K], || e_wi)
+        m.eval_given::<true>(at, wi, MASKINGS[K], Self::COMPENSATION, || e_wi)
     }
 
     #[inline(always)]
@@ -206,7 +233,7 @@ impl<const K: usize, D: NormalDistribution, F: FresnelAverage> TableOp<Compensat
         u: Vec2,
         uc: f32,
     ) -> Option<BxdfSample<F::Spectrum>> {
-        m.sample_unfinished::<true>(at, u, uc, MASKINGS[K])
+        m.sample_unfinished::<true>(at, u, uc, MASKINGS[K], Self::COMPENSATION)
     }
 }
 
@@ -222,7 +249,7 @@ where
         wi: Vec3s<'_>,
         f: <F::Spectrum as Lanes>::Mut<'_>,
     ) -> Result<(), LengthError> {
-        by_masking!(self, table_eval(wo, wi, f))
+        by_compensation!(self, table_eval(wo, wi, f))
     }
 
     fn pdf_batch(&self, wo: Vec3s<'_>, wi: Vec3s<'_>, pdf: &mut [f32]) -> Result<(), LengthError> {
@@ -236,7 +263,7 @@ where
         uc: &[f32],
         out: SampleOut<'_, F::Spectrum>,
     ) -> Result<(), LengthError> {
-        by_masking!(self, table_sample(wo, u, uc, out))
+        by_compensation!(self, table_sample(wo, u, uc, out))
     }
 }
 batch_by_masking!(impl<D: NormalDistribution + Clone> for CompensatedDielectric<D> where f32);

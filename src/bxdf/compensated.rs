@@ -281,21 +281,24 @@ impl<D: NormalDistribution, F: FresnelAverage> CompensatedMicrofacet<D, F> {
         wi: Vec3,
         masking: Masking,
     ) -> F::Spectrum {
-        self.eval_given::<PER_CHANNEL>(at, wi, masking, || self.albedo.e(wi.z))
+        let e_wi = || self.albedo.e(wi.z);
+        self.eval_given::<PER_CHANNEL>(at, wi, masking, self.compensation, e_wi)
     }
 
     /// [`eval_with`](Self::eval_with) with `E(μi)` from `e_wi` (called only for a pair above
-    /// the surface), as [`prepare_given`](Self::prepare_given) takes `E(μo)`.
+    /// the surface), as [`prepare_given`](Self::prepare_given) takes `E(μo)`, and the
+    /// compensation a parameter, as [`sample_unfinished`](Self::sample_unfinished) takes it.
     #[inline(always)]
     pub(crate) fn eval_given<const PER_CHANNEL: bool>(
         &self,
         at: &CompensatedState<At<View>, F::Spectrum>,
         wi: Vec3,
         masking: Masking,
+        compensation: Compensation,
         e_wi: impl FnOnce() -> f32,
     ) -> F::Spectrum {
         let f = self.inner.eval_with::<PER_CHANNEL>(&at.inner, wi, masking);
-        match self.compensation {
+        match compensation {
             Compensation::KullaConty if both_above(at.inner.wo, wi) => {
                 f + Self::lobe(at.outgoing, e_wi())
             }
@@ -340,7 +343,7 @@ impl<D: NormalDistribution, F: FresnelAverage> CompensatedMicrofacet<D, F> {
         uc: f32,
         masking: Masking,
     ) -> Option<BxdfSample<F::Spectrum>> {
-        let s = self.sample_unfinished::<LANES>(at, u, uc, masking)?;
+        let s = self.sample_unfinished::<LANES>(at, u, uc, masking, self.compensation)?;
         Some(match self.compensation {
             Compensation::KullaConty => BxdfSample {
                 f: self.finish(s.f, at.outgoing, self.albedo.e(s.wi.z)),
@@ -362,7 +365,10 @@ impl<D: NormalDistribution, F: FresnelAverage> CompensatedMicrofacet<D, F> {
     /// direction: under Kulla & Conty's compensation, the sample's `f` is the
     /// single-scattering lobe's value alone, to [`finish`](Self::finish); under Turquin's
     /// scaling the sample is complete. A batched loop looks the table up at the sampled
-    /// directions of a chunk of lanes in between.
+    /// directions of a chunk of lanes in between. `compensation` is the model's, a parameter
+    /// so that a batched loop can fix it outside the loop, as `masking`: with the branch
+    /// between the two in the loop, LLVM weighs both samplers in every lane, and leaves the
+    /// loop scalar for a costly Fresnel term (the exact conductor's).
     #[inline(always)]
     pub(crate) fn sample_unfinished<const LANES: bool>(
         &self,
@@ -370,9 +376,10 @@ impl<D: NormalDistribution, F: FresnelAverage> CompensatedMicrofacet<D, F> {
         u: Vec2,
         uc: f32,
         masking: Masking,
+        compensation: Compensation,
     ) -> Option<BxdfSample<F::Spectrum>> {
         let inner = &self.inner;
-        if self.compensation == Compensation::Turquin {
+        if compensation == Compensation::Turquin {
             let mut s = inner.sample_with::<LANES>(&at.inner, u, uc, masking)?;
             s.f = Self::turquin(s.f, at.outgoing);
             return Some(s);

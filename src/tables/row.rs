@@ -196,7 +196,16 @@ mod tests {
 
     /// Every `μ` the lookup distinguishes near the nodes, between them and outside `[0, 1]`.
     fn mus() -> Vec<f32> {
-        let mut mus = vec![f32::NAN, f32::NEG_INFINITY, -1.0, -0.0, 0.0, 1.0, 1.5, f32::INFINITY];
+        let mut mus = vec![
+            f32::NAN,
+            f32::NEG_INFINITY,
+            -1.0,
+            -0.0,
+            0.0,
+            1.0,
+            1.5,
+            f32::INFINITY,
+        ];
         for i in 0..MU_NODES {
             let node = AlbedoRow::node(i);
             let mut below = node;
@@ -216,7 +225,11 @@ mod tests {
         let row = row();
         for mu in mus() {
             let (got, want) = (row.e(mu), by_definition(&row, mu));
-            assert_eq!(got.to_bits(), want.to_bits(), "μ = {mu:e}: {got} against {want}");
+            assert_eq!(
+                got.to_bits(),
+                want.to_bits(),
+                "μ = {mu:e}: {got} against {want}"
+            );
         }
     }
 
