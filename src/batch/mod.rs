@@ -29,9 +29,10 @@
 //! ```
 //!
 //! **The same numbers as the scalar path.** A batched call runs the model's own scalar code
-//! ([`Prepare`]) on every lane (one exception, below: the energy-compensated microfacet
+//! ([`Prepare`]) on every lane (two exceptions, below: the energy-compensated microfacet
 //! model's `sample` has a second form for loops, written beside the scalar one and equal to
-//! it by construction), and the results
+//! it by construction, and that model's loops look its albedo table up in passes of their
+//! own, by the scalar path's lookup), and the results
 //! equal `eval`, `pdf` and `sample` bit for bit where the compiler keeps the operations as
 //! written (it does not contract or reassociate `f32` arithmetic, so that is every lane the
 //! tests have seen; `tests/batch.rs` checks adversarial lanes — grazing, below the horizon,
@@ -55,7 +56,14 @@
 //! models' lane code has no library calls (sine and cosine are [`crate::math::sin_cos_turns`]);
 //! a lane that calls one (Beckmann's `erfc`, Phong's `powf`) still runs, one lane at a time.
 //! The microfacet models (plain and energy-compensated, reflecting and refracting) have one
-//! loop per masking term. A microfacet model's loops, and the energy-compensated microfacet
+//! loop per masking term, and the energy-compensated microfacet model one per masking term
+//! and compensation (with the choice between Kulla & Conty's lobe and Turquin's scaling
+//! inside the loop, LLVM weighed both samplers in every lane). That model's loops take 256
+//! lanes at a time: a pass looks its albedo table up at each lane's `wo` (and `wi`), the
+//! [`AlbedoRow`](crate::tables::AlbedoRow) lookup split into the positions, which vectorise,
+//! and the reads; then the model's arithmetic runs in a loop that reads no table; `sample`
+//! then looks the table up at the sampled directions and adds the compensation lobe's value
+//! in a last pass. A microfacet model's loops, and the energy-compensated microfacet
 //! model's, take the Fresnel term channel by channel
 //! ([`Fresnel::eval_per_channel`](crate::fresnel::Fresnel::eval_per_channel)): the exact
 //! conductor's scalar `eval` puts an RGB spectrum's channels side by side in one SIMD
@@ -73,18 +81,21 @@
 //! model finds vectorising that loop not beneficial).
 //!
 //! **Under AVX2 without AVX-512** LLVM's cost model weighs a gather, an `f64` operation and a
-//! branch that a loop must turn into selects more heavily than under AVX-512, and some loops
-//! stay scalar there, or nearly (measured on an AMD EPYC with AVX2 and FMA only, 2026-11-29;
-//! the README's "Against other implementations" has the run): the energy-compensated
-//! models' three calls and the plastic's `eval` and `sample`, whose albedo tables are read
-//! per lane (a gather). A probe outside the crate, not kept because it moves values, showed
-//! the cause: one fixed table entry in place of the lookup took the compensated Schlick
-//! conductor's batched `eval` from 9.1 to 4.8 ns per lane. The rough dielectric's `eval` and
-//! `sample` stayed scalar there too until their batched loops took forms without early
-//! returns: every lane forms both directions, the configuration and the value, and an
-//! unusable lane discards them (the same numbers). With its `f64` half vector (for
-//! refraction `wo + η' wi` cancels), the branches had tipped the balance. AVX-512
-//! vectorises all of them.
+//! branch that a loop must turn into selects more heavily than under AVX-512, and some loops stay
+//! scalar there, or nearly (measured on an AMD EPYC with AVX2 and FMA only, 2026-11-29; the
+//! README's "Against other implementations" has the run): the compensated glass's calls and the
+//! plastic's `eval` and `sample`, whose albedo tables are read per lane (a gather), and the
+//! compensated gold conductor's `sample` (its exact Fresnel term in three channels: LLVM finds the
+//! vector loop not beneficial). The energy-compensated microfacet model's loops stayed scalar too
+//! until they looked the table up in passes of their own (above): old and new builds interleaved,
+//! five rounds, 4,096 lanes, its batched `eval` went 0.67× (Schlick) and 0.69× (gold) of the old,
+//! `pdf` 0.28× and 0.45×, the Schlick conductor's `sample` 0.57× (38.95 → 22.35 ns per lane), with
+//! gold's `sample` at 1.06× (within the rounds' spread). The rough dielectric's `eval` and `sample`
+//! stayed scalar there too until their batched loops took forms without early returns: every lane
+//! forms both directions, the configuration and the value, and an unusable lane discards them (the
+//! same numbers). With its `f64` half vector (for refraction `wo + η' wi` cancels), the branches
+//! had tipped the balance. AVX-512 vectorised all of them before the table passes; the passes are
+//! not measured there.
 //!
 //! **Batch size.** Keep a batch within the L2 cache: an RGB `eval`'s slices take 36 bytes per
 //! lane, so 2¹⁵ lanes are 1.1 MiB (the machine measured here has a 2 MiB L2). The outputs are

@@ -13,12 +13,13 @@ use crate::microfacet::NormalDistribution;
 use crate::spectrum::Spectrum;
 
 use super::kernel::{LaneOp, Plain};
-use super::tabulated::{TableLanes, TableOp, table_eval, table_pdf, table_sample};
+use super::tabulated::{TableLanes, TableOp, TableSample, TableSampleOp};
+use super::tabulated::{table_eval, table_pdf, table_sample};
 use super::{Lanes, LengthError, SampleOut, Vec2s, Vec3s, eval_with, sample_with};
 use crate::bxdf::{At, BxdfSample, CompensatedState, Compensation, Prepare};
 use crate::microfacet::Masking;
 use crate::microfacet::View;
-use crate::tables::AlbedoRow;
+use crate::tables::CHUNK;
 use glam::{Vec2, Vec3};
 
 impl<S: Spectrum + Lanes> Batch for Lambert<S> {}
@@ -175,15 +176,17 @@ macro_rules! by_compensation {
 
 impl<D: NormalDistribution, F: FresnelAverage> TableLanes for CompensatedMicrofacet<D, F> {
     #[inline(always)]
-    fn row(&self) -> &AlbedoRow {
-        self.albedo()
+    fn look_up(&self, z: &[f32], e: &mut [f32; CHUNK]) {
+        self.albedo().e_chunk(z, e);
     }
 
     #[inline(always)]
     fn prepare_given(&self, wo: Vec3, e_wo: f32) -> Self::Prepared {
         CompensatedMicrofacet::prepare_given(self, wo, || e_wo)
     }
+}
 
+impl<D: NormalDistribution, F: FresnelAverage> TableSample for CompensatedMicrofacet<D, F> {
     #[inline(always)]
     fn unfinished(&self) -> bool {
         self.compensation() == Compensation::KullaConty
@@ -225,7 +228,11 @@ impl<const K: usize, const KULLA: bool, D: NormalDistribution, F: FresnelAverage
     ) -> F::Spectrum {
         m.eval_given::<true>(at, wi, MASKINGS[K], Self::COMPENSATION, || e_wi)
     }
+}
 
+impl<const K: usize, const KULLA: bool, D: NormalDistribution, F: FresnelAverage>
+    TableSampleOp<CompensatedMicrofacet<D, F>> for FixedCompensation<K, KULLA>
+{
     #[inline(always)]
     fn sample(
         m: &CompensatedMicrofacet<D, F>,

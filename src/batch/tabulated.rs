@@ -1,7 +1,7 @@
-//! The batched `eval` and `pdf` of a model that reads an albedo table at each lane's
-//! directions (the energy-compensated microfacet model): a chunk of lanes at a time, the
-//! table first ([`AlbedoRow::e_chunk`]), then the model's arithmetic in a loop that reads no
-//! table.
+//! The batched loops of a model that reads an albedo table at each lane's directions (the
+//! energy-compensated microfacet model): a chunk of lanes at a time, the table first ([`AlbedoRow::e_chunk`]), then the model's
+//! arithmetic in a loop that reads no table (and for `sample`, the table at the sampled
+//! directions, then the samples' values).
 //!
 //! A read at a different place in each lane is a gather. On a target with AVX2 and no
 //! AVX-512, LLVM's cost model takes gathers for slow and then leaves the whole loop scalar:
@@ -14,32 +14,43 @@ use super::lanes::{Lanes, Vec2s, Vec3s, Vec3sMut};
 use super::{LengthError, SampleOut, same_length};
 use crate::bxdf::{BxdfSample, Lobes, Prepare};
 use crate::spectrum::Spectrum;
-use crate::tables::{AlbedoRow, CHUNK};
+#[cfg(doc)]
+use crate::tables::AlbedoRow;
+use crate::tables::CHUNK;
 use core::marker::PhantomData;
 use glam::{Vec2, Vec3};
 
-/// A model whose prepared state reads one [`AlbedoRow`] at `μo = wo.z`, whose value reads it
-/// at `μi = wi.z`, and whose sample, drawn, may be left unfinished for want of the row's
-/// value at the sampled direction.
+/// A model whose prepared state reads an albedo table at `wo`, and whose value reads it at
+/// `wi`.
 pub(crate) trait TableLanes: Prepare {
-    /// The row read at each lane's directions.
-    fn row(&self) -> &AlbedoRow;
-    /// [`Prepare::prepare`] with the row's value at `wo.z` given as `e_wo`.
+    /// The table's value at each direction whose `z` is `z[k]`, into `e[k]` (at most
+    /// [`CHUNK`] lanes; [`AlbedoRow::e_chunk`]).
+    fn look_up(&self, z: &[f32], e: &mut [f32; CHUNK]);
+    /// [`Prepare::prepare`] with the table's value at `wo` given as `e_wo`.
     fn prepare_given(&self, wo: Vec3, e_wo: f32) -> Self::Prepared;
-    /// Whether [`TableOp::sample`] leaves its samples unfinished.
+}
+
+/// A [`TableLanes`] model whose sample, drawn, may be left unfinished for want of the
+/// table's value at the sampled direction.
+pub(crate) trait TableSample: TableLanes {
+    /// Whether [`TableSampleOp::sample`] leaves its samples unfinished.
     fn unfinished(&self) -> bool;
     /// What [`finish`](Self::finish) needs of the prepared state.
     fn outgoing(at: &Self::Prepared) -> Self::Spectrum;
     /// An unfinished sample's value, from its value `f` as drawn, what it needs of the
-    /// prepared state, and the row's value `e_wi` at the sampled direction's `wi.z`.
+    /// prepared state, and the table's value `e_wi` at the sampled direction.
     fn finish(&self, f: Self::Spectrum, outgoing: Self::Spectrum, e_wi: f32) -> Self::Spectrum;
 }
 
-/// How one lane is computed from the prepared state (and the row's value at `wi.z`).
+/// How one lane's value is computed from the prepared state and the table's value at `wi`.
 pub(crate) trait TableOp<M: TableLanes> {
-    /// `eval(wo, wi)`, with `e_wi` the row's value at `wi.z`.
+    /// `eval(wo, wi)`, with `e_wi` the table's value at `wi`.
     fn eval(m: &M, at: &M::Prepared, wi: Vec3, e_wi: f32) -> M::Spectrum;
-    /// `sample(wo, u, uc)`, unfinished where [`TableLanes::unfinished`] says so.
+}
+
+/// How one lane's sample is drawn from the prepared state.
+pub(crate) trait TableSampleOp<M: TableSample> {
+    /// `sample(wo, u, uc)`, unfinished where [`TableSample::unfinished`] says so.
     fn sample(m: &M, at: &M::Prepared, u: Vec2, uc: f32) -> Option<BxdfSample<M::Spectrum>>;
 }
 
@@ -76,8 +87,8 @@ where
         let m = self.m.clone();
         let (mut e_wo, mut e_wi) = ([0.0; CHUNK], [0.0; CHUNK]);
         for (start, end) in chunks(n) {
-            m.row().e_chunk(&wo.z[start..end], &mut e_wo);
-            m.row().e_chunk(&wi.z[start..end], &mut e_wi);
+            m.look_up(&wo.z[start..end], &mut e_wo);
+            m.look_up(&wi.z[start..end], &mut e_wi);
             for (j, k) in (start..end).enumerate() {
                 let at = m.prepare_given(wo.get(k), e_wo[j]);
                 M::Spectrum::put(&mut f, k, O::eval(&m, &at, wi.get(k), e_wi[j]));
@@ -104,7 +115,7 @@ impl<M: TableLanes + Clone> Kernel for TablePdfKernel<'_, '_, M> {
         let m = self.m.clone();
         let mut e_wo = [0.0; CHUNK];
         for (start, end) in chunks(n) {
-            m.row().e_chunk(&wo.z[start..end], &mut e_wo);
+            m.look_up(&wo.z[start..end], &mut e_wo);
             for (j, k) in (start..end).enumerate() {
                 pdf[k] = m.pdf_prepared(&m.prepare_given(wo.get(k), e_wo[j]), wi.get(k));
             }
@@ -128,7 +139,7 @@ where
     pub(super) op: PhantomData<O>,
 }
 
-impl<M: TableLanes + Clone, O: TableOp<M>> Kernel for TableSampleKernel<'_, '_, M, O>
+impl<M: TableSample + Clone, O: TableSampleOp<M>> Kernel for TableSampleKernel<'_, '_, M, O>
 where
     M::Spectrum: Lanes,
 {
@@ -159,7 +170,7 @@ where
         let mut outgoing = [M::Spectrum::zero(); CHUNK];
         let mut sampled = [false; CHUNK];
         for (start, end) in chunks(n) {
-            m.row().e_chunk(&wo.z[start..end], &mut e_wo);
+            m.look_up(&wo.z[start..end], &mut e_wo);
             for (j, k) in (start..end).enumerate() {
                 let at = m.prepare_given(wo.get(k), e_wo[j]);
                 let (w, v, p, l, e) = match O::sample(&m, &at, u.get(k), uc[k]) {
@@ -173,7 +184,7 @@ where
                 (drawn[j], outgoing[j], sampled[j]) = (v, M::outgoing(&at), l != Lobes::NONE);
             }
             if unfinished {
-                m.row().e_chunk(&wi.z[start..end], &mut e_wi);
+                m.look_up(&wi.z[start..end], &mut e_wi);
             }
             for (j, k) in (start..end).enumerate() {
                 let v = if unfinished && sampled[j] {
@@ -228,7 +239,7 @@ pub(super) fn table_pdf<M: TableLanes + Clone>(
 /// [`Batch::sample_batch`](super::Batch::sample_batch) through [`TableSampleKernel`] with the
 /// lane operation `O`.
 #[inline(always)]
-pub(super) fn table_sample<M: TableLanes + Clone, O: TableOp<M>>(
+pub(super) fn table_sample<M: TableSample + Clone, O: TableSampleOp<M>>(
     m: &M,
     wo: Vec3s<'_>,
     u: Vec2s<'_>,
