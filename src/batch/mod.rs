@@ -84,7 +84,8 @@
 //! branch that a loop must turn into selects more heavily than under AVX-512, and some loops stay
 //! scalar there, or nearly (measured on an AMD EPYC with AVX2 and FMA only, 2026-11-29; the
 //! README's "Against other implementations" has the run): the compensated glass's calls and the
-//! plastic's `eval` and `sample`, whose albedo tables are read per lane (a gather), and the
+//! plastic's `eval` and `sample`, whose albedo tables are read per lane (a gather; the passes
+//! below left the glass's loops scalar, its lane code branching between sides), and the
 //! compensated gold conductor's `sample` (its exact Fresnel term in three channels: LLVM finds the
 //! vector loop not beneficial). The energy-compensated microfacet model's loops stayed scalar too
 //! until they looked the table up in passes of their own (above): old and new builds interleaved,
