@@ -244,8 +244,8 @@ impl<const K: usize, const KULLA: bool, D: NormalDistribution, F: FresnelAverage
     }
 }
 
-/// The compensated microfacet model's `eval` and `pdf` look its albedo table up a chunk of
-/// lanes at a time ([`super::tabulated`]); its `sample` runs as the plain model's does.
+/// The compensated microfacet model's three loops look its albedo table up a chunk of lanes
+/// at a time (the module `tabulated`), with the masking term and the compensation fixed.
 impl<D: NormalDistribution + Clone, F: FresnelAverage> Batch for CompensatedMicrofacet<D, F>
 where
     F::Spectrum: Lanes,
