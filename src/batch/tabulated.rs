@@ -186,13 +186,12 @@ where
             if unfinished {
                 m.look_up(&wi.z[start..end], &mut e_wi);
             }
-            for (j, k) in (start..end).enumerate() {
-                let v = if unfinished && sampled[j] {
-                    m.finish(drawn[j], outgoing[j], e_wi[j])
-                } else {
-                    drawn[j]
-                };
-                M::Spectrum::put(&mut f, k, v);
+            // Zipped, so that no index is checked; every lane finished and the value chosen
+            // after, so that the loop has no branch.
+            let lanes = drawn.iter().zip(&outgoing).zip(sampled.iter().zip(&e_wi));
+            for (k, ((&v, &o), (&s, &e))) in (start..end).zip(lanes) {
+                let finished = m.finish(v, o, e);
+                M::Spectrum::put(&mut f, k, if unfinished & s { finished } else { v });
             }
         }
     }

@@ -394,7 +394,7 @@ impl<D: NormalDistribution, F: FresnelAverage> CompensatedMicrofacet<D, F> {
         let (wi, f, pdf, lobe) = if LANES {
             let (cosine, reflected) = (cosine_hemisphere(u), inner.sample_direction(&at.inner, u));
             let wi = if diffuse { cosine } else { reflected };
-            let (f, pdf) = inner.eval_pdf_with::<true>(&at.inner, wi, masking);
+            let (f, pdf) = inner.eval_pdf_lane::<true>(&at.inner, wi, masking);
             if !diffuse && !usable_pdf(pdf) {
                 return None;
             }

@@ -171,6 +171,30 @@ impl<D: NormalDistribution, F: Fresnel> Microfacet<D, F> {
         }
     }
 
+    /// [`eval_pdf_with`](Self::eval_pdf_with) without an early return, for a batched loop:
+    /// an unusable pair (not both above the surface, or `wo + wi = 0`) is evaluated at the
+    /// stand-in `s = z` and answered with zeros at the end. The same numbers.
+    #[inline(always)]
+    pub(crate) fn eval_pdf_lane<const PER_CHANNEL: bool>(
+        &self,
+        at: &At<View>,
+        wi: Vec3,
+        masking: Masking,
+    ) -> (F::Spectrum, f32) {
+        let s = at.wo + wi;
+        let s2 = s.length_squared();
+        let usable = both_above(at.wo, wi) & (s2 > 0.0);
+        let (s, s2) = if usable { (s, s2) } else { (Vec3::Z, 1.0) };
+        let d = self.distribution.d_unnormalized(s, s2);
+        let f = self.value::<PER_CHANNEL>(at, wi, s, s2, d, masking);
+        let pdf = self.density(at, s, d);
+        if usable {
+            (f, pdf)
+        } else {
+            (F::Spectrum::zero(), 0.0)
+        }
+    }
+
     /// The direction [`sample_with`](Self::sample_with) draws for `u`: `wo` reflected about
     /// a normal drawn from the distribution (possibly below the surface: `sample_with`
     /// refuses it there, and where its density is unusable).
