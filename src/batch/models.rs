@@ -162,16 +162,18 @@ batch_by_masking!(impl<D: NormalDistribution + Clone> for RoughDielectric<D> whe
 
 /// Chooses a compensated model's loop for its masking term and compensation.
 macro_rules! by_compensation {
-    ($m:expr, $run:ident($($arg:expr),*)) => {
-        match ($m.masking(), $m.compensation() == Compensation::KullaConty) {
-            (Masking::HeightCorrelated, true) => $run::<_, FixedCompensation<0, true>>($m, $($arg),*),
-            (Masking::Separable, true) => $run::<_, FixedCompensation<1, true>>($m, $($arg),*),
-            (Masking::VCavity, true) => $run::<_, FixedCompensation<2, true>>($m, $($arg),*),
-            (Masking::HeightCorrelated, false) => $run::<_, FixedCompensation<0, false>>($m, $($arg),*),
-            (Masking::Separable, false) => $run::<_, FixedCompensation<1, false>>($m, $($arg),*),
-            (Masking::VCavity, false) => $run::<_, FixedCompensation<2, false>>($m, $($arg),*),
+    ($m:expr, $run:ident($($arg:expr),*)) => {{
+        use Compensation::{KullaConty, Turquin};
+        use Masking::{HeightCorrelated, Separable, VCavity};
+        match ($m.masking(), $m.compensation()) {
+            (HeightCorrelated, KullaConty) => $run::<_, FixedCompensation<0, true>>($m, $($arg),*),
+            (Separable, KullaConty) => $run::<_, FixedCompensation<1, true>>($m, $($arg),*),
+            (VCavity, KullaConty) => $run::<_, FixedCompensation<2, true>>($m, $($arg),*),
+            (HeightCorrelated, Turquin) => $run::<_, FixedCompensation<0, false>>($m, $($arg),*),
+            (Separable, Turquin) => $run::<_, FixedCompensation<1, false>>($m, $($arg),*),
+            (VCavity, Turquin) => $run::<_, FixedCompensation<2, false>>($m, $($arg),*),
         }
-    };
+    }};
 }
 
 impl<D: NormalDistribution, F: FresnelAverage> TableLanes for CompensatedMicrofacet<D, F> {
@@ -181,17 +183,12 @@ impl<D: NormalDistribution, F: FresnelAverage> TableLanes for CompensatedMicrofa
     }
 
     #[inline(always)]
-    fn prepare_given(&self, wo: Vec3, e_wo: f32) -> Self::Prepared {
-        CompensatedMicrofacet::prepare_given(self, wo, || e_wo)
+    fn prepare_from(&self, wo: Vec3, e_wo: f32) -> Self::Prepared {
+        self.prepare_given(wo, || e_wo)
     }
 }
 
 impl<D: NormalDistribution, F: FresnelAverage> TableSample for CompensatedMicrofacet<D, F> {
-    #[inline(always)]
-    fn unfinished(&self) -> bool {
-        self.compensation() == Compensation::KullaConty
-    }
-
     #[inline(always)]
     fn outgoing(at: &Self::Prepared) -> F::Spectrum {
         at.outgoing
@@ -233,6 +230,8 @@ impl<const K: usize, const KULLA: bool, D: NormalDistribution, F: FresnelAverage
 impl<const K: usize, const KULLA: bool, D: NormalDistribution, F: FresnelAverage>
     TableSampleOp<CompensatedMicrofacet<D, F>> for FixedCompensation<K, KULLA>
 {
+    const UNFINISHED: bool = KULLA;
+
     #[inline(always)]
     fn sample(
         m: &CompensatedMicrofacet<D, F>,

@@ -1,13 +1,17 @@
 //! The batched loops of a model that reads an albedo table at each lane's directions (the
-//! energy-compensated microfacet model): a chunk of lanes at a time, the table first ([`AlbedoRow::e_chunk`]), then the model's
-//! arithmetic in a loop that reads no table (and for `sample`, the table at the sampled
-//! directions, then the samples' values).
+//! energy-compensated microfacet model): a chunk of lanes at a time, the table first
+//! ([`AlbedoRow::e_chunk`]), then the model's arithmetic in a loop that reads no table (and
+//! for `sample`, the table at the sampled directions, then the samples' values).
 //!
 //! A read at a different place in each lane is a gather. On a target with AVX2 and no
 //! AVX-512, LLVM's cost model takes gathers for slow and then leaves the whole loop scalar:
 //! with the lookups in a pass of their own the rest vectorises (the [module docs](super) have
 //! the figures). The numbers are those of the scalar path: the same lookups, the same
-//! arithmetic, in another order of lanes.
+//! arithmetic, in another order of passes.
+//!
+//! The chunk's buffers live on the stack: up to 11 KiB for a `Vec4` model's `sample` (5 KiB
+//! for `f32`), zeroed on every call; a batch of a few lanes pays for that, one of 256 or
+//! more does not notice it.
 
 use super::kernel::{Kernel, cut, dispatch};
 use super::lanes::{Lanes, Vec2s, Vec3s, Vec3sMut};
@@ -27,14 +31,12 @@ pub(crate) trait TableLanes: Prepare {
     /// [`CHUNK`] lanes; [`AlbedoRow::e_chunk`]).
     fn look_up(&self, z: &[f32], e: &mut [f32; CHUNK]);
     /// [`Prepare::prepare`] with the table's value at `wo` given as `e_wo`.
-    fn prepare_given(&self, wo: Vec3, e_wo: f32) -> Self::Prepared;
+    fn prepare_from(&self, wo: Vec3, e_wo: f32) -> Self::Prepared;
 }
 
 /// A [`TableLanes`] model whose sample, drawn, may be left unfinished for want of the
 /// table's value at the sampled direction.
 pub(crate) trait TableSample: TableLanes {
-    /// Whether [`TableSampleOp::sample`] leaves its samples unfinished.
-    fn unfinished(&self) -> bool;
     /// What [`finish`](Self::finish) needs of the prepared state.
     fn outgoing(at: &Self::Prepared) -> Self::Spectrum;
     /// An unfinished sample's value, from its value `f` as drawn, what it needs of the
@@ -50,7 +52,10 @@ pub(crate) trait TableOp<M: TableLanes> {
 
 /// How one lane's sample is drawn from the prepared state.
 pub(crate) trait TableSampleOp<M: TableSample> {
-    /// `sample(wo, u, uc)`, unfinished where [`TableSample::unfinished`] says so.
+    /// Whether [`sample`](Self::sample) leaves its samples unfinished: the loop then looks
+    /// the table up at the sampled directions and [finishes](TableSample::finish) them.
+    const UNFINISHED: bool;
+    /// `sample(wo, u, uc)`, unfinished where [`UNFINISHED`](Self::UNFINISHED) says so.
     fn sample(m: &M, at: &M::Prepared, u: Vec2, uc: f32) -> Option<BxdfSample<M::Spectrum>>;
 }
 
@@ -89,9 +94,9 @@ where
         for (start, end) in chunks(n) {
             m.look_up(&wo.z[start..end], &mut e_wo);
             m.look_up(&wi.z[start..end], &mut e_wi);
-            for (j, k) in (start..end).enumerate() {
-                let at = m.prepare_given(wo.get(k), e_wo[j]);
-                M::Spectrum::put(&mut f, k, O::eval(&m, &at, wi.get(k), e_wi[j]));
+            for (k, (&e_wo, &e_wi)) in (start..end).zip(e_wo.iter().zip(&e_wi)) {
+                let at = m.prepare_from(wo.get(k), e_wo);
+                M::Spectrum::put(&mut f, k, O::eval(&m, &at, wi.get(k), e_wi));
             }
         }
     }
@@ -116,8 +121,8 @@ impl<M: TableLanes + Clone> Kernel for TablePdfKernel<'_, '_, M> {
         let mut e_wo = [0.0; CHUNK];
         for (start, end) in chunks(n) {
             m.look_up(&wo.z[start..end], &mut e_wo);
-            for (j, k) in (start..end).enumerate() {
-                pdf[k] = m.pdf_prepared(&m.prepare_given(wo.get(k), e_wo[j]), wi.get(k));
+            for (k, &e_wo) in (start..end).zip(&e_wo) {
+                pdf[k] = m.pdf_prepared(&m.prepare_from(wo.get(k), e_wo), wi.get(k));
             }
         }
     }
@@ -162,7 +167,6 @@ where
         let (mut wi, mut f): (Vec3sMut<'_>, _) = (wi.truncate(n), M::Spectrum::truncate(f, n));
         let (pdf, lobe, eta) = (&mut pdf[..n], &mut lobe[..n], &mut eta[..n]);
         let m = self.m.clone();
-        let unfinished = m.unfinished();
         let (mut e_wo, mut e_wi) = ([0.0; CHUNK], [0.0; CHUNK]);
         // Per lane of the chunk: the value as drawn, what finishing it needs, and whether
         // there is a sample.
@@ -171,8 +175,11 @@ where
         let mut sampled = [false; CHUNK];
         for (start, end) in chunks(n) {
             m.look_up(&wo.z[start..end], &mut e_wo);
-            for (j, k) in (start..end).enumerate() {
-                let at = m.prepare_given(wo.get(k), e_wo[j]);
+            let kept = drawn.iter_mut().zip(&mut outgoing).zip(&mut sampled);
+            for (k, (&e_wo, ((drawn, outgoing), sampled))) in
+                (start..end).zip(e_wo.iter().zip(kept))
+            {
+                let at = m.prepare_from(wo.get(k), e_wo);
                 let (w, v, p, l, e) = match O::sample(&m, &at, u.get(k), uc[k]) {
                     Some(s) => (s.wi, s.f, s.pdf, s.lobe, s.eta),
                     None => (Vec3::ZERO, M::Spectrum::zero(), 0.0, Lobes::NONE, 0.0),
@@ -181,17 +188,21 @@ where
                 pdf[k] = p;
                 lobe[k] = l;
                 eta[k] = e;
-                (drawn[j], outgoing[j], sampled[j]) = (v, M::outgoing(&at), l != Lobes::NONE);
+                (*drawn, *outgoing, *sampled) = (v, M::outgoing(&at), l != Lobes::NONE);
             }
-            if unfinished {
-                m.look_up(&wi.z[start..end], &mut e_wi);
+            if !O::UNFINISHED {
+                for (k, &v) in (start..end).zip(&drawn) {
+                    M::Spectrum::put(&mut f, k, v);
+                }
+                continue;
             }
+            m.look_up(&wi.z[start..end], &mut e_wi);
             // Zipped, so that no index is checked; every lane finished and the value chosen
             // after, so that the loop has no branch.
             let lanes = drawn.iter().zip(&outgoing).zip(sampled.iter().zip(&e_wi));
             for (k, ((&v, &o), (&s, &e))) in (start..end).zip(lanes) {
                 let finished = m.finish(v, o, e);
-                M::Spectrum::put(&mut f, k, if unfinished & s { finished } else { v });
+                M::Spectrum::put(&mut f, k, if s { finished } else { v });
             }
         }
     }

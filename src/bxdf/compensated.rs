@@ -300,7 +300,7 @@ impl<D: NormalDistribution, F: FresnelAverage> CompensatedMicrofacet<D, F> {
         let f = self.inner.eval_with::<PER_CHANNEL>(&at.inner, wi, masking);
         match compensation {
             Compensation::KullaConty if both_above(at.inner.wo, wi) => {
-                f + Self::lobe(at.outgoing, e_wi())
+                self.finish(f, at.outgoing, e_wi())
             }
             Compensation::KullaConty => f,
             Compensation::Turquin => Self::turquin(f, at.outgoing),
@@ -322,7 +322,7 @@ impl<D: NormalDistribution, F: FresnelAverage> CompensatedMicrofacet<D, F> {
         let p = at.probability;
         match self.compensation {
             Compensation::KullaConty if both_above(at.inner.wo, wi) => (
-                f + Self::lobe(at.outgoing, self.albedo.e(wi.z)),
+                self.finish(f, at.outgoing, self.albedo.e(wi.z)),
                 (1.0 - p) * pdf + p * cosine_hemisphere_pdf(wi.z),
             ),
             Compensation::KullaConty => (f, (1.0 - p) * pdf),

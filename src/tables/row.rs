@@ -93,6 +93,11 @@ impl AlbedoRow {
     /// loop on a target with AVX2 and no AVX-512).
     #[inline(always)]
     pub(crate) fn e_chunk(&self, mu: &[f32], e: &mut [f32; CHUNK]) {
+        debug_assert!(
+            mu.len() <= CHUNK,
+            "{} lanes for a chunk of {CHUNK}",
+            mu.len()
+        );
         let mut node = [0_u32; CHUNK];
         for ((&mu, e), node) in mu.iter().zip(e.iter_mut()).zip(node.iter_mut()) {
             let (i, t) = position(mu);
@@ -129,8 +134,11 @@ impl AlbedoRow {
 /// How many lanes [`AlbedoRow::e_chunk`] looks up at once.
 pub(crate) const CHUNK: usize = 256;
 
-/// The node `i` below `μ` and the fraction `t` of the way to the next, for `x = √μ`
-/// ([`AlbedoRow::e`]); `μ` outside `[0, 1]` (or NaN) is clamped to it.
+/// The node `i` below `μ` and the fraction `t` of the way to the next, for
+/// `x = (MU_NODES − 1) √μ` ([`AlbedoRow::e`]); `μ` outside `[0, 1]` (or NaN) is clamped to it.
+/// The trick below needs `f32` arithmetic rounded to `f32` at every step (SSE2 and every
+/// target but x87 without SSE2, where extra precision would round `x` instead of truncating:
+/// `lookup_is_the_interpolant_of_the_nodes_bit_for_bit` would fail there).
 #[inline(always)]
 fn position(mu: f32) -> (u32, f32) {
     let mu = if mu > 0.0 { mu.min(1.0) } else { 0.0 };
@@ -194,7 +202,9 @@ mod tests {
         a + (x - i as f32) * (b - a)
     }
 
-    /// Every `μ` the lookup distinguishes near the nodes, between them and outside `[0, 1]`.
+    /// `μ` at and within four ulps of every node, halfway between nodes in `x` (where
+    /// rounding to the nearest whole number ties), on a grid of step 10⁻⁵, and outside
+    /// `[0, 1]`.
     fn mus() -> Vec<f32> {
         let mut mus = vec![
             f32::NAN,
@@ -217,6 +227,10 @@ mod tests {
             }
         }
         mus.extend((0..=100_000).map(|k| k as f32 / 100_000.0));
+        mus.extend((0..MU_NODES).map(|i| {
+            let x = (i as f32 + 0.5) / (MU_NODES - 1) as f32;
+            x * x
+        }));
         mus
     }
 
