@@ -144,7 +144,7 @@ pub use lanes::{Lanes, Vec2s, Vec3s, Vec3sMut, Vec4sMut};
 
 use crate::bxdf::{Lobes, Prepare};
 use core::fmt;
-use kernel::{EvalKernel, LaneOp, PdfKernel, Plain, SampleKernel, dispatch};
+use kernel::{EvalKernel, Kernel, PdfKernel, Plain, SampleKernel, dispatch};
 
 /// A batched call's slices disagree in length; nothing was written.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -229,7 +229,7 @@ where
         wi: Vec3s<'_>,
         f: <Self::Spectrum as Lanes>::Mut<'_>,
     ) -> Result<(), LengthError> {
-        eval_with::<Self, Plain>(self, wo, wi, f)
+        run(eval_kernel::<Self, Plain>(self, wo, wi, f))
     }
 
     /// `pdf[k] = pdf(wo[k], wi[k])` for every lane `k`.
@@ -237,7 +237,7 @@ where
     /// # Errors
     /// [`LengthError`] when the slices differ in length (nothing is written).
     fn pdf_batch(&self, wo: Vec3s<'_>, wi: Vec3s<'_>, pdf: &mut [f32]) -> Result<(), LengthError> {
-        pdf_with::<Self, Plain>(self, wo, wi, pdf)
+        run(pdf_kernel::<Self, Plain>(self, wo, wi, pdf))
     }
 
     /// `sample(wo[k], u[k], uc[k])` for every lane `k`, written to `out`.
@@ -251,67 +251,70 @@ where
         uc: &[f32],
         out: SampleOut<'_, Self::Spectrum>,
     ) -> Result<(), LengthError> {
-        sample_with::<Self, Plain>(self, wo, u, uc, out)
+        run(sample_kernel::<Self, Plain>(self, wo, u, uc, out))
     }
 }
 
-/// [`Batch::eval_batch`] with the lane operation `O`.
+/// Runs a batched call's kernel (compiled for the CPU's widest instruction set), or returns
+/// the length error its slices gave.
 #[inline(always)]
-fn eval_with<'a, 'f, M: Prepare + Clone, O: LaneOp<M>>(
+fn run<K: Kernel>(kernel: Result<K, LengthError>) -> Result<(), LengthError> {
+    dispatch(kernel?);
+    Ok(())
+}
+
+/// The [`EvalKernel`] of a call, whose slices must have one length.
+#[inline(always)]
+fn eval_kernel<'a, 'f, M: Prepare, O>(
     m: &'a M,
     wo: Vec3s<'a>,
     wi: Vec3s<'a>,
     f: <M::Spectrum as Lanes>::Mut<'f>,
-) -> Result<(), LengthError>
+) -> Result<EvalKernel<'a, 'f, M, O>, LengthError>
 where
     M::Spectrum: Lanes,
 {
     let n = same_length(&[wo.lanes()?, wi.lanes()?, M::Spectrum::lanes(&f)?])?;
-    let op = core::marker::PhantomData::<O>;
-    dispatch(EvalKernel {
+    let op = core::marker::PhantomData;
+    Ok(EvalKernel {
         m,
         wo,
         wi,
         f,
         n,
         op,
-    });
-    Ok(())
+    })
 }
 
-/// [`Batch::pdf_batch`] with the lane operation `O`.
+/// The [`PdfKernel`] of a call, whose slices must have one length.
 #[inline(always)]
-fn pdf_with<'a, M: Prepare + Clone, O: LaneOp<M>>(
+fn pdf_kernel<'a, 'f, M, O>(
     m: &'a M,
     wo: Vec3s<'a>,
     wi: Vec3s<'a>,
-    pdf: &mut [f32],
-) -> Result<(), LengthError>
-where
-    M::Spectrum: Lanes,
-{
+    pdf: &'f mut [f32],
+) -> Result<PdfKernel<'a, 'f, M, O>, LengthError> {
     let n = same_length(&[wo.lanes()?, wi.lanes()?, pdf.len()])?;
-    let op = core::marker::PhantomData::<O>;
-    dispatch(PdfKernel {
+    let op = core::marker::PhantomData;
+    Ok(PdfKernel {
         m,
         wo,
         wi,
         pdf,
         n,
         op,
-    });
-    Ok(())
+    })
 }
 
-/// [`Batch::sample_batch`] with the lane operation `O`.
+/// The [`SampleKernel`] of a call, whose slices must have one length.
 #[inline(always)]
-fn sample_with<'a, 'f, M: Prepare + Clone, O: LaneOp<M>>(
+fn sample_kernel<'a, 'f, M: Prepare, O>(
     m: &'a M,
     wo: Vec3s<'a>,
     u: Vec2s<'a>,
     uc: &'a [f32],
     out: SampleOut<'f, M::Spectrum>,
-) -> Result<(), LengthError>
+) -> Result<SampleKernel<'a, 'f, M, O>, LengthError>
 where
     M::Spectrum: Lanes,
 {
@@ -325,8 +328,8 @@ where
         out.lobe.len(),
         out.eta.len(),
     ])?;
-    let op = core::marker::PhantomData::<O>;
-    dispatch(SampleKernel {
+    let op = core::marker::PhantomData;
+    Ok(SampleKernel {
         m,
         wo,
         u,
@@ -334,6 +337,5 @@ where
         out,
         n,
         op,
-    });
-    Ok(())
+    })
 }

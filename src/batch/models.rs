@@ -13,9 +13,10 @@ use crate::microfacet::NormalDistribution;
 use crate::spectrum::Spectrum;
 
 use super::kernel::{LaneOp, Plain};
+use super::tabulated::chunked;
 use super::tabulated::{TableLanes, TableOp, TableSample, TableSampleOp};
-use super::tabulated::{table_eval, table_pdf, table_sample};
-use super::{Lanes, LengthError, SampleOut, Vec2s, Vec3s, eval_with, sample_with};
+use super::{Lanes, LengthError, SampleOut, Vec2s, Vec3s, run};
+use super::{eval_kernel, pdf_kernel, sample_kernel};
 use crate::bxdf::{At, BxdfSample, CompensatedState, Compensation, Prepare};
 use crate::microfacet::Masking;
 use crate::microfacet::View;
@@ -119,11 +120,11 @@ impl<const K: usize, M: Masked> LaneOp<M> for FixedMasking<K> {
 
 /// Chooses the loop for the model's masking term.
 macro_rules! by_masking {
-    ($m:expr, $run:ident($($arg:expr),*)) => {
+    ($m:expr, $kernel:ident($($arg:expr),*)) => {
         match $m.masking() {
-            Masking::HeightCorrelated => $run::<_, FixedMasking<0>>($m, $($arg),*),
-            Masking::Separable => $run::<_, FixedMasking<1>>($m, $($arg),*),
-            Masking::VCavity => $run::<_, FixedMasking<2>>($m, $($arg),*),
+            Masking::HeightCorrelated => run($kernel::<_, FixedMasking<0>>($m, $($arg),*)),
+            Masking::Separable => run($kernel::<_, FixedMasking<1>>($m, $($arg),*)),
+            Masking::VCavity => run($kernel::<_, FixedMasking<2>>($m, $($arg),*)),
         }
     };
 }
@@ -141,7 +142,7 @@ macro_rules! batch_by_masking {
                 wi: Vec3s<'_>,
                 f: <$s as Lanes>::Mut<'_>,
             ) -> Result<(), LengthError> {
-                by_masking!(self, eval_with(wo, wi, f))
+                by_masking!(self, eval_kernel(wo, wi, f))
             }
 
             fn sample_batch(
@@ -151,7 +152,7 @@ macro_rules! batch_by_masking {
                 uc: &[f32],
                 out: SampleOut<'_, $s>,
             ) -> Result<(), LengthError> {
-                by_masking!(self, sample_with(wo, u, uc, out))
+                by_masking!(self, sample_kernel(wo, u, uc, out))
             }
         }
     };
@@ -160,18 +161,18 @@ macro_rules! batch_by_masking {
 batch_by_masking!(impl<D: NormalDistribution + Clone, F: Fresnel> for Microfacet<D, F> where F::Spectrum);
 batch_by_masking!(impl<D: NormalDistribution + Clone> for RoughDielectric<D> where f32);
 
-/// Chooses a compensated model's loop for its masking term and compensation.
+/// Chooses a compensated model's loop, run in chunks, for its masking term and compensation.
 macro_rules! by_compensation {
-    ($m:expr, $run:ident($($arg:expr),*)) => {{
+    ($m:expr, $kernel:ident($($arg:expr),*)) => {{
         use Compensation::{KullaConty, Turquin};
         use Masking::{HeightCorrelated, Separable, VCavity};
         match ($m.masking(), $m.compensation()) {
-            (HeightCorrelated, KullaConty) => $run::<_, FixedCompensation<0, true>>($m, $($arg),*),
-            (Separable, KullaConty) => $run::<_, FixedCompensation<1, true>>($m, $($arg),*),
-            (VCavity, KullaConty) => $run::<_, FixedCompensation<2, true>>($m, $($arg),*),
-            (HeightCorrelated, Turquin) => $run::<_, FixedCompensation<0, false>>($m, $($arg),*),
-            (Separable, Turquin) => $run::<_, FixedCompensation<1, false>>($m, $($arg),*),
-            (VCavity, Turquin) => $run::<_, FixedCompensation<2, false>>($m, $($arg),*),
+            (HeightCorrelated, KullaConty) => chunked($kernel::<_, Fixed<0, true>>($m, $($arg),*)),
+            (Separable, KullaConty) => chunked($kernel::<_, Fixed<1, true>>($m, $($arg),*)),
+            (VCavity, KullaConty) => chunked($kernel::<_, Fixed<2, true>>($m, $($arg),*)),
+            (HeightCorrelated, Turquin) => chunked($kernel::<_, Fixed<0, false>>($m, $($arg),*)),
+            (Separable, Turquin) => chunked($kernel::<_, Fixed<1, false>>($m, $($arg),*)),
+            (VCavity, Turquin) => chunked($kernel::<_, Fixed<2, false>>($m, $($arg),*)),
         }
     }};
 }
@@ -202,9 +203,9 @@ impl<D: NormalDistribution, F: FresnelAverage> TableSample for CompensatedMicrof
 
 /// A compensated model's lanes with the masking term `MASKINGS[K]` and the compensation
 /// (Kulla & Conty's where `KULLA`, else Turquin's) fixed.
-struct FixedCompensation<const K: usize, const KULLA: bool>;
+struct Fixed<const K: usize, const KULLA: bool>;
 
-impl<const K: usize, const KULLA: bool> FixedCompensation<K, KULLA> {
+impl<const K: usize, const KULLA: bool> Fixed<K, KULLA> {
     /// The compensation.
     const COMPENSATION: Compensation = if KULLA {
         Compensation::KullaConty
@@ -214,7 +215,7 @@ impl<const K: usize, const KULLA: bool> FixedCompensation<K, KULLA> {
 }
 
 impl<const K: usize, const KULLA: bool, D: NormalDistribution, F: FresnelAverage>
-    TableOp<CompensatedMicrofacet<D, F>> for FixedCompensation<K, KULLA>
+    TableOp<CompensatedMicrofacet<D, F>> for Fixed<K, KULLA>
 {
     #[inline(always)]
     fn eval(
@@ -228,7 +229,7 @@ impl<const K: usize, const KULLA: bool, D: NormalDistribution, F: FresnelAverage
 }
 
 impl<const K: usize, const KULLA: bool, D: NormalDistribution, F: FresnelAverage>
-    TableSampleOp<CompensatedMicrofacet<D, F>> for FixedCompensation<K, KULLA>
+    TableSampleOp<CompensatedMicrofacet<D, F>> for Fixed<K, KULLA>
 {
     const UNFINISHED: bool = KULLA;
 
@@ -255,11 +256,11 @@ where
         wi: Vec3s<'_>,
         f: <F::Spectrum as Lanes>::Mut<'_>,
     ) -> Result<(), LengthError> {
-        by_compensation!(self, table_eval(wo, wi, f))
+        by_compensation!(self, eval_kernel(wo, wi, f))
     }
 
     fn pdf_batch(&self, wo: Vec3s<'_>, wi: Vec3s<'_>, pdf: &mut [f32]) -> Result<(), LengthError> {
-        table_pdf(self, wo, wi, pdf)
+        chunked(pdf_kernel::<_, ()>(self, wo, wi, pdf))
     }
 
     fn sample_batch(
@@ -269,7 +270,7 @@ where
         uc: &[f32],
         out: SampleOut<'_, F::Spectrum>,
     ) -> Result<(), LengthError> {
-        by_compensation!(self, table_sample(wo, u, uc, out))
+        by_compensation!(self, sample_kernel(wo, u, uc, out))
     }
 }
 batch_by_masking!(impl<D: NormalDistribution + Clone> for CompensatedDielectric<D> where f32);
@@ -343,9 +344,9 @@ macro_rules! batch_plastic {
             ) -> Result<(), LengthError> {
                 match self.coat().masking() {
                     Masking::HeightCorrelated => {
-                        eval_with::<_, HeightCorrelatedCoat>(self, wo, wi, f)
+                        run(eval_kernel::<_, HeightCorrelatedCoat>(self, wo, wi, f))
                     }
-                    _ => eval_with::<_, Plain>(self, wo, wi, f),
+                    _ => run(eval_kernel::<_, Plain>(self, wo, wi, f)),
                 }
             }
 
@@ -357,10 +358,10 @@ macro_rules! batch_plastic {
                 out: SampleOut<'_, S>,
             ) -> Result<(), LengthError> {
                 match self.coat().masking() {
-                    Masking::HeightCorrelated => {
-                        sample_with::<_, HeightCorrelatedCoat>(self, wo, u, uc, out)
-                    }
-                    _ => sample_with::<_, Plain>(self, wo, u, uc, out),
+                    Masking::HeightCorrelated => run(sample_kernel::<_, HeightCorrelatedCoat>(
+                        self, wo, u, uc, out,
+                    )),
+                    _ => run(sample_kernel::<_, Plain>(self, wo, u, uc, out)),
                 }
             }
         }

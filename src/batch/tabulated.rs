@@ -13,15 +13,14 @@
 //! for `f32`), zeroed on every call; a batch of a few lanes pays for that, one of 256 or
 //! more does not notice it.
 
-use super::kernel::{Kernel, cut, dispatch};
-use super::lanes::{Lanes, Vec2s, Vec3s, Vec3sMut};
-use super::{LengthError, SampleOut, same_length};
+use super::kernel::{EvalKernel, Kernel, PdfKernel, SampleKernel, cut};
+use super::lanes::{Lanes, Vec2s, Vec3sMut};
+use super::{LengthError, SampleOut};
 use crate::bxdf::{BxdfSample, Lobes, Prepare};
 use crate::spectrum::Spectrum;
 #[cfg(doc)]
 use crate::tables::AlbedoRow;
 use crate::tables::CHUNK;
-use core::marker::PhantomData;
 use glam::{Vec2, Vec3};
 
 /// A model whose prepared state reads an albedo table at `wo`, and whose value reads it at
@@ -59,6 +58,10 @@ pub(crate) trait TableSampleOp<M: TableSample> {
     fn sample(m: &M, at: &M::Prepared, u: Vec2, uc: f32) -> Option<BxdfSample<M::Spectrum>>;
 }
 
+/// A batched call's kernel ([`EvalKernel`], [`PdfKernel`], [`SampleKernel`]) run a chunk
+/// of lanes at a time, for a table model's lane operation.
+pub(crate) struct Chunked<K>(K);
+
 /// The chunks of `0..n`, as `(start, end)`.
 #[inline(always)]
 fn chunks(n: usize) -> impl Iterator<Item = (usize, usize)> {
@@ -68,28 +71,18 @@ fn chunks(n: usize) -> impl Iterator<Item = (usize, usize)> {
 }
 
 /// `f[k] = eval(wo[k], wi[k])` over the first `n` lanes, a chunk at a time.
-pub(crate) struct TableEvalKernel<'a, 'f, M: Prepare, O>
-where
-    M::Spectrum: Lanes,
-{
-    pub(super) m: &'a M,
-    pub(super) wo: Vec3s<'a>,
-    pub(super) wi: Vec3s<'a>,
-    pub(super) f: <M::Spectrum as Lanes>::Mut<'f>,
-    pub(super) n: usize,
-    pub(super) op: PhantomData<O>,
-}
-
-impl<M: TableLanes + Clone, O: TableOp<M>> Kernel for TableEvalKernel<'_, '_, M, O>
+impl<M: TableLanes + Clone, O: TableOp<M>> Kernel for Chunked<EvalKernel<'_, '_, M, O>>
 where
     M::Spectrum: Lanes,
 {
     #[inline(always)]
     fn run(self) {
-        let n = self.n;
-        let (wo, wi) = (cut(self.wo, n), cut(self.wi, n));
-        let mut f = M::Spectrum::truncate(self.f, n);
-        let m = self.m.clone();
+        let EvalKernel {
+            m, wo, wi, f, n, ..
+        } = self.0;
+        let (wo, wi) = (cut(wo, n), cut(wi, n));
+        let mut f = M::Spectrum::truncate(f, n);
+        let m = m.clone();
         let (mut e_wo, mut e_wi) = ([0.0; CHUNK], [0.0; CHUNK]);
         for (start, end) in chunks(n) {
             m.look_up(&wo.z[start..end], &mut e_wo);
@@ -103,21 +96,15 @@ where
 }
 
 /// `pdf[k] = pdf(wo[k], wi[k])` over the first `n` lanes, a chunk at a time.
-pub(crate) struct TablePdfKernel<'a, 'f, M> {
-    pub(super) m: &'a M,
-    pub(super) wo: Vec3s<'a>,
-    pub(super) wi: Vec3s<'a>,
-    pub(super) pdf: &'f mut [f32],
-    pub(super) n: usize,
-}
-
-impl<M: TableLanes + Clone> Kernel for TablePdfKernel<'_, '_, M> {
+impl<M: TableLanes + Clone> Kernel for Chunked<PdfKernel<'_, '_, M, ()>> {
     #[inline(always)]
     fn run(self) {
-        let n = self.n;
-        let (wo, wi) = (cut(self.wo, n), cut(self.wi, n));
-        let pdf = &mut self.pdf[..n];
-        let m = self.m.clone();
+        let PdfKernel {
+            m, wo, wi, pdf, n, ..
+        } = self.0;
+        let (wo, wi) = (cut(wo, n), cut(wi, n));
+        let pdf = &mut pdf[..n];
+        let m = m.clone();
         let mut e_wo = [0.0; CHUNK];
         for (start, end) in chunks(n) {
             m.look_up(&wo.z[start..end], &mut e_wo);
@@ -131,42 +118,37 @@ impl<M: TableLanes + Clone> Kernel for TablePdfKernel<'_, '_, M> {
 /// `(wi, f, pdf, lobe, eta)[k] = sample(wo[k], u[k], uc[k])` over the first `n` lanes, zeros
 /// (and [`Lobes::NONE`]) for no sample, a chunk at a time: the row at `wo.z`, the samples, the
 /// row at the sampled directions' `wi.z` (where the samples are unfinished), their values.
-pub(crate) struct TableSampleKernel<'a, 'f, M: Prepare, O>
-where
-    M::Spectrum: Lanes,
-{
-    pub(super) m: &'a M,
-    pub(super) wo: Vec3s<'a>,
-    pub(super) u: Vec2s<'a>,
-    pub(super) uc: &'a [f32],
-    pub(super) out: SampleOut<'f, M::Spectrum>,
-    pub(super) n: usize,
-    pub(super) op: PhantomData<O>,
-}
-
-impl<M: TableSample + Clone, O: TableSampleOp<M>> Kernel for TableSampleKernel<'_, '_, M, O>
+impl<M: TableSample + Clone, O: TableSampleOp<M>> Kernel for Chunked<SampleKernel<'_, '_, M, O>>
 where
     M::Spectrum: Lanes,
 {
     #[inline(always)]
     fn run(self) {
-        let n = self.n;
-        let wo = cut(self.wo, n);
+        let SampleKernel {
+            m,
+            wo,
+            u,
+            uc,
+            out,
+            n,
+            ..
+        } = self.0;
+        let wo = cut(wo, n);
         let u = Vec2s {
-            x: &self.u.x[..n],
-            y: &self.u.y[..n],
+            x: &u.x[..n],
+            y: &u.y[..n],
         };
-        let uc = &self.uc[..n];
+        let uc = &uc[..n];
         let SampleOut {
             wi,
             f,
             pdf,
             lobe,
             eta,
-        } = self.out;
+        } = out;
         let (mut wi, mut f): (Vec3sMut<'_>, _) = (wi.truncate(n), M::Spectrum::truncate(f, n));
         let (pdf, lobe, eta) = (&mut pdf[..n], &mut lobe[..n], &mut eta[..n]);
-        let m = self.m.clone();
+        let m = m.clone();
         let (mut e_wo, mut e_wi) = ([0.0; CHUNK], [0.0; CHUNK]);
         // Per lane of the chunk: the value as drawn, what finishing it needs, and whether
         // there is a sample.
@@ -208,76 +190,11 @@ where
     }
 }
 
-/// [`Batch::eval_batch`](super::Batch::eval_batch) through [`TableEvalKernel`] with the lane
-/// operation `O`.
+/// [`run`](super::run)s a call's kernel in chunks.
 #[inline(always)]
-pub(super) fn table_eval<M: TableLanes + Clone, O: TableOp<M>>(
-    m: &M,
-    wo: Vec3s<'_>,
-    wi: Vec3s<'_>,
-    f: <M::Spectrum as Lanes>::Mut<'_>,
-) -> Result<(), LengthError>
+pub(super) fn chunked<K>(kernel: Result<K, LengthError>) -> Result<(), LengthError>
 where
-    M::Spectrum: Lanes,
+    Chunked<K>: Kernel,
 {
-    let n = same_length(&[wo.lanes()?, wi.lanes()?, M::Spectrum::lanes(&f)?])?;
-    let op = PhantomData::<O>;
-    dispatch(TableEvalKernel {
-        m,
-        wo,
-        wi,
-        f,
-        n,
-        op,
-    });
-    Ok(())
-}
-
-/// [`Batch::pdf_batch`](super::Batch::pdf_batch) through [`TablePdfKernel`].
-#[inline(always)]
-pub(super) fn table_pdf<M: TableLanes + Clone>(
-    m: &M,
-    wo: Vec3s<'_>,
-    wi: Vec3s<'_>,
-    pdf: &mut [f32],
-) -> Result<(), LengthError> {
-    let n = same_length(&[wo.lanes()?, wi.lanes()?, pdf.len()])?;
-    dispatch(TablePdfKernel { m, wo, wi, pdf, n });
-    Ok(())
-}
-
-/// [`Batch::sample_batch`](super::Batch::sample_batch) through [`TableSampleKernel`] with the
-/// lane operation `O`.
-#[inline(always)]
-pub(super) fn table_sample<M: TableSample + Clone, O: TableSampleOp<M>>(
-    m: &M,
-    wo: Vec3s<'_>,
-    u: Vec2s<'_>,
-    uc: &[f32],
-    out: SampleOut<'_, M::Spectrum>,
-) -> Result<(), LengthError>
-where
-    M::Spectrum: Lanes,
-{
-    let n = same_length(&[
-        wo.lanes()?,
-        u.lanes()?,
-        uc.len(),
-        out.wi.lanes()?,
-        M::Spectrum::lanes(&out.f)?,
-        out.pdf.len(),
-        out.lobe.len(),
-        out.eta.len(),
-    ])?;
-    let op = PhantomData::<O>;
-    dispatch(TableSampleKernel {
-        m,
-        wo,
-        u,
-        uc,
-        out,
-        n,
-        op,
-    });
-    Ok(())
+    super::run(kernel.map(Chunked))
 }
