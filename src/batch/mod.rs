@@ -63,7 +63,9 @@
 //! [`AlbedoRow`](crate::tables::AlbedoRow) lookup split into the positions, which vectorise,
 //! and the reads; then the model's arithmetic runs in a loop that reads no table; `sample`
 //! then looks the table up at the sampled directions and adds the compensation lobe's value
-//! in a last pass. A microfacet model's loops, and the energy-compensated microfacet
+//! in a last pass. The chunk's buffers are on the stack (up to 11 KiB for a `Vec4` model's
+//! `sample`, zeroed on each call: a batch of a few lanes pays for that, one of 256 or more
+//! does not notice it). A microfacet model's loops, and the energy-compensated microfacet
 //! model's, take the Fresnel term channel by channel
 //! ([`Fresnel::eval_per_channel`](crate::fresnel::Fresnel::eval_per_channel)): the exact
 //! conductor's scalar `eval` puts an RGB spectrum's channels side by side in one SIMD
