@@ -17,6 +17,7 @@ use super::tabulated::chunked;
 use super::tabulated::{TableLanes, TableOp, TableSample, TableSampleOp};
 use super::{Lanes, LengthError, SampleOut, Vec2s, Vec3s, run};
 use super::{eval_kernel, pdf_kernel, sample_kernel};
+use crate::bxdf::PlasticState;
 use crate::bxdf::{At, BxdfSample, CompensatedState, Compensation, Prepare};
 use crate::microfacet::Masking;
 use crate::microfacet::View;
@@ -334,7 +335,7 @@ where
 /// masking term fixed. The constructors give every coat height-correlated masking; a coat
 /// with another term would take the plain loops (the same numbers, not vectorised).
 macro_rules! batch_plastic {
-    ($coat:ty) => {
+    ($coat:ty, $eval:ident) => {
         impl<D: NormalDistribution + Clone, S: Spectrum + Lanes> Batch for Plastic<D, S, $coat> {
             fn eval_batch(
                 &self,
@@ -344,7 +345,7 @@ macro_rules! batch_plastic {
             ) -> Result<(), LengthError> {
                 match self.coat().masking() {
                     Masking::HeightCorrelated => {
-                        run(eval_kernel::<_, HeightCorrelatedCoat>(self, wo, wi, f))
+                        $eval(eval_kernel::<_, HeightCorrelatedCoat>(self, wo, wi, f))
                     }
                     _ => run(eval_kernel::<_, Plain>(self, wo, wi, f)),
                 }
@@ -368,5 +369,34 @@ macro_rules! batch_plastic {
     };
 }
 
-batch_plastic!(Microfacet<D, Dielectric>);
-batch_plastic!(CompensatedMicrofacet<D, Dielectric>);
+batch_plastic!(Microfacet<D, Dielectric>, chunked);
+batch_plastic!(CompensatedMicrofacet<D, Dielectric>, run);
+
+/// The plastic with the plain coat reads its own coat-albedo table at `wo` and `wi`: its
+/// `eval` loop looks it up a chunk of lanes at a time (the compensated coat reads a second
+/// table, its own, per lane: that plastic's loops stay as they are).
+impl<D: NormalDistribution, S: Spectrum> TableLanes for Plastic<D, S, Microfacet<D, Dielectric>> {
+    #[inline(always)]
+    fn look_up(&self, z: &[f32], e: &mut [f32; CHUNK]) {
+        self.coat_albedo_chunk(z, e);
+    }
+
+    #[inline(always)]
+    fn prepare_from(&self, wo: Vec3, e_wo: f32) -> Self::Prepared {
+        self.prepare_given(wo, e_wo)
+    }
+}
+
+impl<D: NormalDistribution, S: Spectrum> TableOp<Plastic<D, S, Microfacet<D, Dielectric>>>
+    for HeightCorrelatedCoat
+{
+    #[inline(always)]
+    fn eval(
+        m: &Plastic<D, S, Microfacet<D, Dielectric>>,
+        at: &At<PlasticState<At<View>>>,
+        wi: Vec3,
+        e_wi: f32,
+    ) -> S {
+        m.eval_given::<Self>(at, wi, || e_wi)
+    }
+}

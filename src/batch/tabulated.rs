@@ -1,5 +1,6 @@
 //! The batched loops of a model that reads an albedo table at each lane's directions (the
-//! energy-compensated microfacet model): a chunk of lanes at a time, the table first
+//! energy-compensated microfacet model's, the plain-coat plastic's `eval`): a chunk of lanes
+//! at a time, the table first
 //! ([`AlbedoRow::e_chunk`]), then the model's arithmetic in a loop that reads no table (and
 //! for `sample`, the table at the sampled directions, then the samples' values).
 //!

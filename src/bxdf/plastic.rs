@@ -9,7 +9,7 @@ use crate::microfacet::{Masking, NormalDistribution};
 use crate::param::{Eta, ParamError, unit_interval};
 use crate::sampling::{cosine_hemisphere, cosine_hemisphere_pdf, reuse_uniform};
 use crate::spectrum::Spectrum;
-use crate::tables::TabulatedDielectric;
+use crate::tables::{CHUNK, TabulatedDielectric, node_below};
 use core::f32::consts::FRAC_1_PI;
 use core::marker::PhantomData;
 use glam::{Vec2, Vec3};
@@ -177,16 +177,37 @@ impl<D, S: Spectrum, C> Plastic<D, S, C> {
     #[inline]
     #[must_use]
     pub fn coat_albedo_at(&self, cos_theta: f32) -> f32 {
-        let x = cos_theta.clamp(0.0, 1.0) * (TABLE - 1) as f32;
-        let i = (x as usize).min(TABLE - 2);
-        let f = x - i as f32;
+        let (i, f) = node_below(cos_theta.clamp(0.0, 1.0) * (TABLE - 1) as f32, TABLE - 2);
+        self.coat_albedo_between(i as usize, f)
+    }
+
+    /// The table's interpolant at `f ∈ [0, 1]` of the way from node `i` to node `i + 1`.
+    #[inline(always)]
+    fn coat_albedo_between(&self, i: usize, f: f32) -> f32 {
+        let i = i.min(TABLE - 2);
         self.coat_albedo[i] + f * (self.coat_albedo[i + 1] - self.coat_albedo[i])
     }
 
-    /// The diffuse term for `wo`, `wi` above the surface, with `t_o = 1 − E(cos θo)`.
+    /// [`coat_albedo_at`](Self::coat_albedo_at) of every `cos_theta[k]`, into `e[k]` (at most
+    /// [`CHUNK`] lanes), in two passes as [`AlbedoRow`](crate::tables::AlbedoRow)'s chunked
+    /// lookup: the positions, which vectorise, then the reads (for a batched loop).
+    #[inline(always)]
+    pub(crate) fn coat_albedo_chunk(&self, cos_theta: &[f32], e: &mut [f32; CHUNK]) {
+        debug_assert!(cos_theta.len() <= CHUNK);
+        let mut node = [0_u32; CHUNK];
+        for ((&c, e), node) in cos_theta.iter().zip(e.iter_mut()).zip(node.iter_mut()) {
+            (*node, *e) = node_below(c.clamp(0.0, 1.0) * (TABLE - 1) as f32, TABLE - 2);
+        }
+        for (e, &i) in e.iter_mut().zip(&node).take(cos_theta.len()) {
+            *e = self.coat_albedo_between(i as usize, *e);
+        }
+    }
+
+    /// The diffuse term for `wo`, `wi` above the surface, with `t_o = 1 − E(cos θo)` and
+    /// `e_wi = E(cos θi)`.
     #[inline]
-    fn diffuse(&self, t_o: f32, wi: Vec3) -> S {
-        let t = t_o * (1.0 - self.coat_albedo_at(wi.z));
+    fn diffuse(&self, t_o: f32, e_wi: f32) -> S {
+        let t = t_o * (1.0 - e_wi);
         self.reflectance * (t * self.diffuse_scale)
     }
 
@@ -275,6 +296,20 @@ impl<D, S: Spectrum, C: Prepare<Spectrum = f32>> Plastic<D, S, C> {
         &self.coat
     }
 
+    /// [`Prepare::prepare`] with the coat's albedo at `wo` given as `e` (a batched loop looks
+    /// it up beforehand).
+    #[inline(always)]
+    pub(crate) fn prepare_given(&self, wo: Vec3, e: f32) -> At<PlasticState<C::Prepared>> {
+        At {
+            wo,
+            state: PlasticState {
+                coat: self.coat.prepare(wo),
+                p_coat: self.coat_probability(e),
+                t_o: 1.0 - e,
+            },
+        }
+    }
+
     /// [`Prepare::eval_prepared`], calling the coat through `O`.
     #[inline(always)]
     pub(crate) fn eval_with<O: CoatCalls<C>>(
@@ -282,11 +317,23 @@ impl<D, S: Spectrum, C: Prepare<Spectrum = f32>> Plastic<D, S, C> {
         at: &At<PlasticState<C::Prepared>>,
         wi: Vec3,
     ) -> S {
+        self.eval_given::<O>(at, wi, || self.coat_albedo_at(wi.z))
+    }
+
+    /// [`eval_with`](Self::eval_with) with the coat's albedo at `wi` from `e_wi` (called
+    /// only for a pair above the surface; a batched loop looks it up beforehand).
+    #[inline(always)]
+    pub(crate) fn eval_given<O: CoatCalls<C>>(
+        &self,
+        at: &At<PlasticState<C::Prepared>>,
+        wi: Vec3,
+        e_wi: impl FnOnce() -> f32,
+    ) -> S {
         if !both_above(at.wo, wi) {
             return S::zero();
         }
         let st = &at.state;
-        S::splat(O::eval(&self.coat, &st.coat, wi)) + self.diffuse(st.t_o, wi)
+        S::splat(O::eval(&self.coat, &st.coat, wi)) + self.diffuse(st.t_o, e_wi())
     }
 
     /// [`Prepare::eval_pdf_prepared`], calling the coat through `O`.
@@ -302,7 +349,7 @@ impl<D, S: Spectrum, C: Prepare<Spectrum = f32>> Plastic<D, S, C> {
         let st = &at.state;
         let (coat_f, coat_pdf) = O::eval_pdf(&self.coat, &st.coat, wi);
         (
-            S::splat(coat_f) + self.diffuse(st.t_o, wi),
+            S::splat(coat_f) + self.diffuse(st.t_o, self.coat_albedo_at(wi.z)),
             st.p_coat * coat_pdf + (1.0 - st.p_coat) * cosine_hemisphere_pdf(wi.z),
         )
     }
@@ -340,7 +387,7 @@ impl<D, S: Spectrum, C: Prepare<Spectrum = f32>> Plastic<D, S, C> {
         }
         Some(BxdfSample::new(
             wi,
-            S::splat(coat_f) + self.diffuse(st.t_o, wi),
+            S::splat(coat_f) + self.diffuse(st.t_o, self.coat_albedo_at(wi.z)),
             pdf,
             lobe,
         ))
@@ -353,15 +400,7 @@ impl<D, S: Spectrum, C: Prepare<Spectrum = f32>> Prepare for Plastic<D, S, C> {
 
     #[inline(always)]
     fn prepare(&self, wo: Vec3) -> Self::Prepared {
-        let e = self.coat_albedo_at(wo.z);
-        At {
-            wo,
-            state: PlasticState {
-                coat: self.coat.prepare(wo),
-                p_coat: self.coat_probability(e),
-                t_o: 1.0 - e,
-            },
-        }
+        self.prepare_given(wo, self.coat_albedo_at(wo.z))
     }
 
     #[inline(always)]
@@ -392,5 +431,71 @@ impl<D, S: Spectrum, C: Prepare<Spectrum = f32>> Prepare for Plastic<D, S, C> {
     #[inline]
     fn lobes(&self) -> Lobes {
         Lobes::DIFFUSE_REFLECTION | Lobes::GLOSSY_REFLECTION
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::microfacet::Ggx;
+    use crate::param::Alpha;
+    use std::vec::Vec;
+
+    fn plastic() -> Plastic<Ggx, f32> {
+        let ggx = Ggx::isotropic(Alpha::new(0.3).unwrap());
+        Plastic::new(0.5, ggx, Eta::new(1.5).unwrap()).unwrap()
+    }
+
+    /// Cosines at and within four ulps of every node, on a grid of step 10⁻⁵, and outside
+    /// `[0, 1]`.
+    fn cosines() -> Vec<f32> {
+        let mut c = std::vec![-1.0, -0.0, 0.0, 1.0, 1.5, f32::INFINITY, f32::NEG_INFINITY];
+        for i in 0..TABLE {
+            let node = i as f32 / (TABLE - 1) as f32;
+            let (mut below, mut above) = (node, node);
+            for _ in 0..4 {
+                c.extend([below, above]);
+                below = f32::from_bits(below.to_bits().saturating_sub(1));
+                above = f32::from_bits(above.to_bits() + 1);
+            }
+        }
+        c.extend((0..=100_000).map(|k| k as f32 / 100_000.0));
+        c
+    }
+
+    /// The lookup as the table's docs define it (the node below by a float-to-integer
+    /// conversion, the straight line to the next), bit for bit.
+    #[test]
+    fn coat_albedo_is_the_interpolant_of_the_table_bit_for_bit() {
+        let p = plastic();
+        for c in cosines() {
+            let x = c.clamp(0.0, 1.0) * (TABLE - 1) as f32;
+            let i = (x as usize).min(TABLE - 2);
+            let (a, b) = (p.coat_albedo[i], p.coat_albedo[i + 1]);
+            let want = a + (x - i as f32) * (b - a);
+            assert_eq!(
+                p.coat_albedo_at(c).to_bits(),
+                want.to_bits(),
+                "cos θ = {c:e}"
+            );
+        }
+    }
+
+    #[test]
+    fn chunked_coat_albedo_is_the_lookup() {
+        let p = plastic();
+        let c = cosines();
+        for part in c.chunks(CHUNK).chain([&c[..3]]) {
+            let mut e = [f32::NAN; CHUNK];
+            p.coat_albedo_chunk(part, &mut e);
+            for (k, &c) in part.iter().enumerate() {
+                assert_eq!(
+                    e[k].to_bits(),
+                    p.coat_albedo_at(c).to_bits(),
+                    "cos θ = {c:e}"
+                );
+            }
+            assert!(e[part.len()..].iter().all(|v| v.is_nan()));
+        }
     }
 }

@@ -68,7 +68,7 @@ pub use ggx_dielectric::{
     GGX_DIELECTRIC_INSIDE, GGX_DIELECTRIC_OUTSIDE, GGX_DIELECTRIC_REFLECTION,
 };
 pub use row::AlbedoRow;
-pub(crate) use row::CHUNK;
+pub(crate) use row::{CHUNK, node_below};
 
 use crate::microfacet::{Beckmann, Ggx, Masking, NormalDistribution};
 use crate::param::{Eta, ParamError};

@@ -136,25 +136,29 @@ pub(crate) const CHUNK: usize = 256;
 
 /// The node `i` below `μ` and the fraction `t` of the way to the next, for
 /// `x = (MU_NODES − 1) √μ` ([`AlbedoRow::e`]); `μ` outside `[0, 1]` (or NaN) is clamped to it.
-/// The trick below needs `f32` arithmetic rounded to `f32` at every step (SSE2 and every
-/// target but x87 without SSE2, where extra precision would round `x` instead of truncating:
-/// `lookup_is_the_interpolant_of_the_nodes_bit_for_bit` would fail there).
 #[inline(always)]
 fn position(mu: f32) -> (u32, f32) {
     let mu = if mu > 0.0 { mu.min(1.0) } else { 0.0 };
+    node_below(crate::math::sqrt(mu) * (MU_NODES - 1) as f32, MU_NODES - 2)
+}
+
+/// For `x ∈ [0, 2²²]`, the whole number `i = min(⌊x⌋, last)` and `x − i`: a table's node below
+/// `x` and the way to the next (`i` is `x as usize` held at `last`, the same numbers).
+///
+/// By adding and taking away 2²³ (whose ulp is 1): `x + 2²³ − 2²³` is x rounded to the nearest
+/// whole number, one less where that rounded up; and the bits of `2²³ + i` below the
+/// exponent's are `i`. Neither a `floor` (a library call on x86-64's baseline, SSE2) nor a
+/// float-to-integer conversion (whose saturating form, NaN to 0, LLVM splits into one scalar
+/// conversion per lane on AVX2): adds, compares and selects, which vectorise. It needs `f32`
+/// arithmetic rounded to `f32` at every step (every target but x87 without SSE2, where extra
+/// precision would round `x` instead of truncating: the lookups' unit tests would fail there).
+#[inline(always)]
+pub(crate) fn node_below(x: f32, last: usize) -> (u32, f32) {
     const TWO_23: f32 = 8_388_608.0;
-    let x = crate::math::sqrt(mu) * (MU_NODES - 1) as f32;
-    // The whole part of x in [0, 64] and its index, by adding and taking away 2²³ (whose ulp
-    // is 1): `x + 2²³ − 2²³` is x rounded to the nearest whole number, one less where that
-    // rounded up; and the bits of `2²³ + node` below the exponent's are `node`. Neither a
-    // `floor` (a library call on x86-64's baseline, SSE2) nor a float-to-integer conversion
-    // (whose saturating form, NaN to 0, LLVM splits into one scalar conversion per lane on
-    // AVX2): adds, compares and selects, which vectorise.
     let nearest = (x + TWO_23) - TWO_23;
     let whole = if nearest > x { nearest - 1.0 } else { nearest };
-    let node = whole.min((MU_NODES - 2) as f32);
-    let i = (node + TWO_23).to_bits() - TWO_23.to_bits();
-    (i, x - node)
+    let node = whole.min(last as f32);
+    ((node + TWO_23).to_bits() - TWO_23.to_bits(), x - node)
 }
 
 /// `2 ∫₀¹ E(μ) μ dμ = 4 ∫₀¹ E(x) x³ dx` for `E` linear in `x = √μ` between the nodes, in
