@@ -604,13 +604,13 @@ fn the_compensated_models_equal_the_scalar_path() {
     assert_both_lobes("plastic compensated", &lobes);
 }
 
-/// The energy-compensated microfacet model's loops run 256 lanes at a time (the albedo table
-/// looked up in passes of their own): batches of no lane, of one, and ending just before, at
-/// and just after a chunk's end, equal the scalar calls lane by lane, bit for bit, for both
-/// compensations. (The other tests' batches have 4,099 lanes: sixteen whole chunks and three
-/// lanes.)
+/// The loops that read a table run 256 lanes at a time (the table looked up in passes of
+/// their own: the energy-compensated microfacet model's three, the plastic's `eval`): batches
+/// of no lane, of one, and ending just before, at and just after a chunk's end, equal the
+/// scalar calls lane by lane, bit for bit, for both compensations. (The other tests' batches
+/// have 4,099 lanes: sixteen whole chunks and three lanes.)
 #[test]
-fn the_compensated_loops_equal_the_scalar_path_at_every_chunk_boundary() {
+fn the_chunked_loops_equal_the_scalar_path_at_every_chunk_boundary() {
     use lobe::bxdf::{CompensatedMicrofacet, Compensation};
     let gold = ComplexIor::new(
         Vec3::new(0.143, 0.375, 1.442),
@@ -622,53 +622,64 @@ fn the_compensated_loops_equal_the_scalar_path_at_every_chunk_boundary() {
         Masking::HeightCorrelated,
         Conductor { ior: gold },
     );
-    let i = inputs();
     for compensation in [Compensation::KullaConty, Compensation::Turquin] {
         let m = CompensatedMicrofacet::new(inner, compensation).unwrap();
-        for n in [0, 1, 255, 256, 257, 511, 512, 513] {
-            let name = format!("{compensation:?}, {n} lanes");
-            let (wo, wi) = (Soa::of(&i.wo[..n]), Soa::of(&i.wi[..n]));
-            let (ux, uy): (Vec<f32>, Vec<f32>) = i.u[..n].iter().map(|u| (u.x, u.y)).unzip();
-            let mut f = Soa::zeros(n);
-            m.eval_batch(wo.view(), wi.view(), f.view_mut()).unwrap();
-            let mut pdf = vec![0.0; n];
-            m.pdf_batch(wo.view(), wi.view(), &mut pdf).unwrap();
-            let (mut swi, mut sf, mut spdf) = (Soa::zeros(n), Soa::zeros(n), vec![0.0; n]);
-            let (mut slobe, mut seta) = (vec![Lobes::SPECULAR_TRANSMISSION; n], vec![-1.0; n]);
-            let out = SampleOut {
-                wi: swi.view_mut(),
-                f: sf.view_mut(),
-                pdf: &mut spdf,
-                lobe: &mut slobe,
-                eta: &mut seta,
+        at_every_chunk_boundary(&format!("{compensation:?}"), &m);
+    }
+    let glass = Eta::new(1.5).unwrap();
+    let plastic = Plastic::new(Vec3::new(0.8, 0.5, 0.2), Ggx::isotropic(a(0.4)), glass);
+    at_every_chunk_boundary("plastic", &plastic.unwrap());
+}
+
+/// [`the_chunked_loops_equal_the_scalar_path_at_every_chunk_boundary`] for one RGB model.
+fn at_every_chunk_boundary<M>(model: &str, m: &M)
+where
+    M: Batch + Bxdf<Spectrum = Vec3> + lobe::bxdf::Prepare<Spectrum = Vec3>,
+{
+    let i = inputs();
+    for n in [0, 1, 255, 256, 257, 511, 512, 513] {
+        let name = format!("{model}, {n} lanes");
+        let (wo, wi) = (Soa::of(&i.wo[..n]), Soa::of(&i.wi[..n]));
+        let (ux, uy): (Vec<f32>, Vec<f32>) = i.u[..n].iter().map(|u| (u.x, u.y)).unzip();
+        let mut f = Soa::zeros(n);
+        m.eval_batch(wo.view(), wi.view(), f.view_mut()).unwrap();
+        let mut pdf = vec![0.0; n];
+        m.pdf_batch(wo.view(), wi.view(), &mut pdf).unwrap();
+        let (mut swi, mut sf, mut spdf) = (Soa::zeros(n), Soa::zeros(n), vec![0.0; n]);
+        let (mut slobe, mut seta) = (vec![Lobes::SPECULAR_TRANSMISSION; n], vec![-1.0; n]);
+        let out = SampleOut {
+            wi: swi.view_mut(),
+            f: sf.view_mut(),
+            pdf: &mut spdf,
+            lobe: &mut slobe,
+            eta: &mut seta,
+        };
+        m.sample_batch(wo.view(), Vec2s { x: &ux, y: &uy }, &i.uc[..n], out)
+            .unwrap();
+        for k in 0..n {
+            let (o, w) = (i.wo[k], i.wi[k]);
+            assert!(same(f.get(k), m.eval(o, w)), "{name}: eval, lane {k}");
+            assert_eq!(
+                pdf[k].to_bits(),
+                m.pdf(o, w).to_bits(),
+                "{name}: pdf, lane {k}"
+            );
+            let (w, v, p, l, e) = match m.sample(o, i.u[k], i.uc[k]) {
+                Some(s) => (s.wi, s.f, s.pdf, s.lobe, s.eta),
+                None => (Vec3::ZERO, Vec3::ZERO, 0.0, Lobes::NONE, 0.0),
             };
-            m.sample_batch(wo.view(), Vec2s { x: &ux, y: &uy }, &i.uc[..n], out)
-                .unwrap();
-            for k in 0..n {
-                let (o, w) = (i.wo[k], i.wi[k]);
-                assert!(same(f.get(k), m.eval(o, w)), "{name}: eval, lane {k}");
-                assert_eq!(
-                    pdf[k].to_bits(),
-                    m.pdf(o, w).to_bits(),
-                    "{name}: pdf, lane {k}"
-                );
-                let (w, v, p, l, e) = match m.sample(o, i.u[k], i.uc[k]) {
-                    Some(s) => (s.wi, s.f, s.pdf, s.lobe, s.eta),
-                    None => (Vec3::ZERO, Vec3::ZERO, 0.0, Lobes::NONE, 0.0),
-                };
-                assert!(same(swi.get(k), w), "{name}: sampled direction, lane {k}");
-                assert!(same(sf.get(k), v), "{name}: sample's value, lane {k}");
-                assert_eq!(
-                    spdf[k].to_bits(),
-                    p.to_bits(),
-                    "{name}: sample's pdf, lane {k}"
-                );
-                assert_eq!(
-                    (slobe[k], seta[k].to_bits()),
-                    (l, e.to_bits()),
-                    "{name}: lane {k}"
-                );
-            }
+            assert!(same(swi.get(k), w), "{name}: sampled direction, lane {k}");
+            assert!(same(sf.get(k), v), "{name}: sample's value, lane {k}");
+            assert_eq!(
+                spdf[k].to_bits(),
+                p.to_bits(),
+                "{name}: sample's pdf, lane {k}"
+            );
+            assert_eq!(
+                (slobe[k], seta[k].to_bits()),
+                (l, e.to_bits()),
+                "{name}: lane {k}"
+            );
         }
     }
 }

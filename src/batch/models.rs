@@ -276,8 +276,9 @@ where
 }
 batch_by_masking!(impl<D: NormalDistribution + Clone> for CompensatedDielectric<D> where f32);
 
-/// A plastic's coat calls with the coat's masking term fixed (height-correlated): the
-/// plastic's `eval` and `sample` loops then vectorise as the microfacet models' do.
+/// A plastic's coat calls with the coat's masking term fixed (height-correlated): read per
+/// lane, the term kept the plastic's loops from vectorising (as for the microfacet models;
+/// under AVX2 the table reads do too: see the `lobe::batch` docs).
 struct HeightCorrelatedCoat;
 
 /// [`CoatCalls`] with height-correlated masking for the coat `$coat` (prepared state
