@@ -4,6 +4,8 @@
 //! (the batched loops run compiled for AVX-512, AVX2 or the baseline, chosen at run time),
 //! the arithmetic is the scalar path's: the test asserts equality bit for bit.
 
+mod common;
+
 use lobe::batch::{Batch, Lanes, LengthError, SampleOut, Vec2s, Vec3s, Vec3sMut};
 use lobe::bxdf::{
     BlinnPhong, BlinnPhongForm, Bxdf, DisneyDiffuse, EnergyPreservingOrenNayar, Glazed, Lambert,
@@ -338,11 +340,7 @@ fn a(x: f32) -> Alpha {
 
 #[test]
 fn microfacet_conductors_equal_the_scalar_path() {
-    let gold = ComplexIor::new(
-        Vec3::new(0.143, 0.375, 1.442),
-        Vec3::new(3.983, 2.386, 1.603),
-    )
-    .unwrap();
+    let gold = common::gold();
     let schlick = Schlick::new(Vec3::new(0.95, 0.64, 0.54)).unwrap();
     for masking in [
         Masking::HeightCorrelated,
@@ -531,11 +529,7 @@ fn the_compensated_models_equal_the_scalar_path() {
     use lobe::fresnel::NoFresnel;
     let hc = Masking::HeightCorrelated;
     let glass = Eta::new(1.5).unwrap();
-    let gold = ComplexIor::new(
-        Vec3::new(0.143, 0.375, 1.442),
-        Vec3::new(3.983, 2.386, 1.603),
-    )
-    .unwrap();
+    let gold = common::gold();
     // The batched sample draws both lobes' directions in every lane and keeps one: compared
     // on lanes of each lobe, for GGX and for Beckmann (whose sampler is another loop).
     fn both_lobes_of<D: lobe::tables::TabulatedAlbedo + Clone>(
@@ -612,11 +606,7 @@ fn the_compensated_models_equal_the_scalar_path() {
 #[test]
 fn the_chunked_loops_equal_the_scalar_path_at_every_chunk_boundary() {
     use lobe::bxdf::{CompensatedMicrofacet, Compensation};
-    let gold = ComplexIor::new(
-        Vec3::new(0.143, 0.375, 1.442),
-        Vec3::new(3.983, 2.386, 1.603),
-    )
-    .unwrap();
+    let gold = common::gold();
     let inner = Microfacet::new(
         Ggx::isotropic(a(0.6)),
         Masking::HeightCorrelated,

@@ -10,7 +10,7 @@ use common::laws::{Model, assert_energy_bound, assert_total};
 use lobe::bxdf::{Bxdf, Mirror, SmoothDielectric, ThinDielectric, TransportMode};
 use lobe::fresnel::{self, Conductor, NoFresnel};
 use lobe::verify::{BxdfCheck, Pcg32};
-use lobe::{ComplexIor, Eta, Vec3};
+use lobe::{Eta, Vec3};
 
 fn viewer(theta: f32, below: bool) -> Vec3 {
     let w = common::dir(theta, 0.9);
@@ -53,11 +53,7 @@ fn delta_models_are_total_and_bounded() {
 
 #[test]
 fn mirror_reflects_with_the_fresnel_weight() {
-    let gold = ComplexIor::new(
-        Vec3::new(0.143, 0.375, 1.442),
-        Vec3::new(3.983, 2.386, 1.603),
-    )
-    .unwrap();
+    let gold = common::gold();
     let mirror = Mirror::new(Conductor { ior: gold });
     for theta in [0.0f32, 30.0, 60.0, 85.0, 89.9] {
         let wo = viewer(theta, false);

@@ -1087,11 +1087,7 @@ fn constructors_refuse_what_the_tables_do_not_hold() {
 /// (`with_albedo`) can pair with — stays finite in `eval`, `eval_pdf` and `sample`.
 #[test]
 fn turquin_scaling_stays_finite_at_the_clamped_value() {
-    let gold = ComplexIor::new(
-        Vec3::new(0.143, 0.375, 1.442),
-        Vec3::new(3.983, 2.386, 1.603),
-    )
-    .unwrap();
+    let gold = common::gold();
     let inner = Microfacet::new(
         Ggx::new(a(0.2), a(0.7)),
         Masking::VCavity,

@@ -11,6 +11,16 @@ pub mod wire;
 use lobe::Vec3;
 use proptest::test_runner::{Config, RngSeed};
 
+/// Gold's complex index of refraction at the red, green and blue primaries (η, k), the
+/// conductor of the tests that want a coloured metal.
+pub fn gold() -> lobe::ComplexIor<Vec3> {
+    lobe::ComplexIor::new(
+        Vec3::new(0.143, 0.375, 1.442),
+        Vec3::new(3.983, 2.386, 1.603),
+    )
+    .unwrap()
+}
+
 /// A seeded, reproducible proptest configuration that writes no regression files.
 pub fn proptest_config(cases: u32) -> Config {
     Config {
