@@ -191,6 +191,8 @@ impl<D: NormalDistribution, F: FresnelAverage> TableLanes for CompensatedMicrofa
 }
 
 impl<D: NormalDistribution, F: FresnelAverage> TableSample for CompensatedMicrofacet<D, F> {
+    type Outgoing = F::Spectrum;
+
     #[inline(always)]
     fn outgoing(at: &Self::Prepared) -> F::Spectrum {
         at.outgoing
@@ -333,10 +335,11 @@ where
 }
 
 /// `Batch` for a plastic with the coat `$coat`: its `eval` and `sample` loops with the coat's
-/// masking term fixed. The constructors give every coat height-correlated masking; a coat
-/// with another term would take the plain loops (the same numbers, not vectorised).
+/// masking term fixed, run by `$run` (`run`, or `chunked`: a chunk of lanes at a time). The
+/// constructors give every coat height-correlated masking; a coat with another term would
+/// take the plain loops (the same numbers, not vectorised).
 macro_rules! batch_plastic {
-    ($coat:ty, $eval:ident) => {
+    ($coat:ty, $run:ident) => {
         impl<D: NormalDistribution + Clone, S: Spectrum + Lanes> Batch for Plastic<D, S, $coat> {
             fn eval_batch(
                 &self,
@@ -346,7 +349,7 @@ macro_rules! batch_plastic {
             ) -> Result<(), LengthError> {
                 match self.coat().masking() {
                     Masking::HeightCorrelated => {
-                        $eval(eval_kernel::<_, HeightCorrelatedCoat>(self, wo, wi, f))
+                        $run(eval_kernel::<_, HeightCorrelatedCoat>(self, wo, wi, f))
                     }
                     _ => run(eval_kernel::<_, Plain>(self, wo, wi, f)),
                 }
@@ -360,7 +363,7 @@ macro_rules! batch_plastic {
                 out: SampleOut<'_, S>,
             ) -> Result<(), LengthError> {
                 match self.coat().masking() {
-                    Masking::HeightCorrelated => run(sample_kernel::<_, HeightCorrelatedCoat>(
+                    Masking::HeightCorrelated => $run(sample_kernel::<_, HeightCorrelatedCoat>(
                         self, wo, u, uc, out,
                     )),
                     _ => run(sample_kernel::<_, Plain>(self, wo, u, uc, out)),
@@ -374,8 +377,8 @@ batch_plastic!(Microfacet<D, Dielectric>, chunked);
 batch_plastic!(CompensatedMicrofacet<D, Dielectric>, run);
 
 /// The plastic with the plain coat reads its own coat-albedo table at `wo` and `wi`: its
-/// `eval` loop looks it up a chunk of lanes at a time (the compensated coat reads a second
-/// table, its own, per lane: that plastic's loops stay as they are).
+/// `eval` and `sample` loops look it up a chunk of lanes at a time (the compensated coat
+/// reads a second table, its own, per lane: that plastic's loops stay as they are).
 impl<D: NormalDistribution, S: Spectrum> TableLanes for Plastic<D, S, Microfacet<D, Dielectric>> {
     #[inline(always)]
     fn look_up(&self, z: &[f32], e: &mut [f32; CHUNK]) {
@@ -399,5 +402,33 @@ impl<D: NormalDistribution, S: Spectrum> TableOp<Plastic<D, S, Microfacet<D, Die
         e_wi: f32,
     ) -> S {
         m.eval_given::<Self>(at, wi, || e_wi)
+    }
+}
+
+impl<D: NormalDistribution, S: Spectrum> TableSample for Plastic<D, S> {
+    type Outgoing = f32;
+
+    #[inline(always)]
+    fn outgoing(at: &Self::Prepared) -> f32 {
+        Self::transmittance(at)
+    }
+
+    #[inline(always)]
+    fn finish(&self, f: S, t_o: f32, e_wi: f32) -> S {
+        Plastic::finish(self, f, t_o, e_wi)
+    }
+}
+
+impl<D: NormalDistribution, S: Spectrum> TableSampleOp<Plastic<D, S>> for HeightCorrelatedCoat {
+    const UNFINISHED: bool = true;
+
+    #[inline(always)]
+    fn sample(
+        m: &Plastic<D, S>,
+        at: &At<PlasticState<At<View>>>,
+        u: Vec2,
+        uc: f32,
+    ) -> Option<BxdfSample<S>> {
+        m.sample_lane(at, u, uc, Masking::HeightCorrelated)
     }
 }

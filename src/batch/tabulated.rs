@@ -1,6 +1,6 @@
 //! The batched loops of a model that reads an albedo table at each lane's directions (the
-//! energy-compensated microfacet model's, the plain-coat plastic's `eval`): a chunk of lanes
-//! at a time, the table first
+//! energy-compensated microfacet model's, the plain-coat plastic's): a chunk of lanes at a
+//! time, the table first
 //! ([`AlbedoRow::e_chunk`]), then the model's arithmetic in a loop that reads no table (and
 //! for `sample`, the table at the sampled directions, then the samples' values).
 //!
@@ -38,10 +38,12 @@ pub(crate) trait TableLanes: Prepare {
 /// table's value at the sampled direction.
 pub(crate) trait TableSample: TableLanes {
     /// What [`finish`](Self::finish) needs of the prepared state.
-    fn outgoing(at: &Self::Prepared) -> Self::Spectrum;
+    type Outgoing: Spectrum;
+    /// That part of the prepared state.
+    fn outgoing(at: &Self::Prepared) -> Self::Outgoing;
     /// An unfinished sample's value, from its value `f` as drawn, what it needs of the
     /// prepared state, and the table's value `e_wi` at the sampled direction.
-    fn finish(&self, f: Self::Spectrum, outgoing: Self::Spectrum, e_wi: f32) -> Self::Spectrum;
+    fn finish(&self, f: Self::Spectrum, outgoing: Self::Outgoing, e_wi: f32) -> Self::Spectrum;
 }
 
 /// How one lane's value is computed from the prepared state and the table's value at `wi`.
@@ -154,7 +156,7 @@ where
         // Per lane of the chunk: the value as drawn, what finishing it needs, and whether
         // there is a sample.
         let mut drawn = [M::Spectrum::zero(); CHUNK];
-        let mut outgoing = [M::Spectrum::zero(); CHUNK];
+        let mut outgoing = [M::Outgoing::zero(); CHUNK];
         let mut sampled = [false; CHUNK];
         for (start, end) in chunks(n) {
             m.look_up(&wo.z[start..end], &mut e_wo);

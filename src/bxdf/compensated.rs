@@ -227,13 +227,6 @@ impl<D: NormalDistribution, F: FresnelAverage> CompensatedMicrofacet<D, F> {
         (f * outgoing).map(|v| v.min(f32::MAX))
     }
 
-    /// The compensation lobe's value for `wo`, `wi` above the surface, given the factor at
-    /// `wo` and `E(μi)`.
-    #[inline(always)]
-    fn lobe(outgoing: F::Spectrum, e_wi: f32) -> F::Spectrum {
-        outgoing * (1.0 - e_wi)
-    }
-
     /// [`Prepare::prepare`] with `E(μo)` from `e_wo` (called only for `wo` above the
     /// surface): the table's value there, or, in a batched loop, that value looked up for a
     /// chunk of lanes beforehand ([`AlbedoRow::e_chunk`]).
@@ -353,12 +346,13 @@ impl<D: NormalDistribution, F: FresnelAverage> CompensatedMicrofacet<D, F> {
         })
     }
 
-    /// The value of a sample that [`sample_unfinished`](Self::sample_unfinished) left
-    /// unfinished (Kulla & Conty's): its single-scattering value `f` and the compensation
-    /// lobe's, from the factor `outgoing` at `wo` and `E(μi)` at the sampled direction.
+    /// Kulla & Conty's value for `wo`, `wi` above the surface: the single-scattering value
+    /// `f` plus the compensation lobe's, `outgoing · (1 − E(μi))`, from the factor `outgoing`
+    /// at `wo` and `E(μi)` at `wi` (for `eval`, and for a sample that
+    /// [`sample_unfinished`](Self::sample_unfinished) left unfinished).
     #[inline(always)]
     pub(crate) fn finish(&self, f: F::Spectrum, outgoing: F::Spectrum, e_wi: f32) -> F::Spectrum {
-        f + Self::lobe(outgoing, e_wi)
+        f + outgoing * (1.0 - e_wi)
     }
 
     /// [`sample_with`](Self::sample_with) but for the table's `E(μi)` at the sampled

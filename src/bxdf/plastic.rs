@@ -5,7 +5,7 @@ use super::{
     both_above, usable_pdf,
 };
 use crate::fresnel::Dielectric;
-use crate::microfacet::{Masking, NormalDistribution};
+use crate::microfacet::{Masking, NormalDistribution, View};
 use crate::param::{Eta, ParamError, unit_interval};
 use crate::sampling::{cosine_hemisphere, cosine_hemisphere_pdf, reuse_uniform};
 use crate::spectrum::Spectrum;
@@ -363,6 +363,25 @@ impl<D, S: Spectrum, C: Prepare<Spectrum = f32>> Plastic<D, S, C> {
         u: Vec2,
         uc: f32,
     ) -> Option<BxdfSample<S>> {
+        let s = self.sample_unfinished::<O>(at, u, uc)?;
+        let e_wi = self.coat_albedo_at(s.wi.z);
+        Some(BxdfSample {
+            f: self.finish(s.f, at.state.t_o, e_wi),
+            ..s
+        })
+    }
+
+    /// [`sample_with`](Self::sample_with) but for the diffuse term, which needs the coat's
+    /// albedo at the sampled direction: the sample's `f` is the coat's value alone, to
+    /// [`finish`](Self::finish) (a batched loop looks the albedo up for a chunk of lanes in
+    /// between).
+    #[inline(always)]
+    fn sample_unfinished<O: CoatCalls<C>>(
+        &self,
+        at: &At<PlasticState<C::Prepared>>,
+        u: Vec2,
+        uc: f32,
+    ) -> Option<BxdfSample<S>> {
         if !(at.wo.z > 0.0) {
             return None;
         }
@@ -379,6 +398,21 @@ impl<D, S: Spectrum, C: Prepare<Spectrum = f32>> Plastic<D, S, C> {
             let (f, pdf) = O::eval_pdf(&self.coat, &st.coat, wi);
             (wi, f, pdf, Lobes::DIFFUSE_REFLECTION)
         };
+        self.drawn(st, wi, coat_f, coat_pdf, lobe)
+    }
+
+    /// The unfinished sample of the direction `wi`, drawn from `lobe`, at which the coat's
+    /// value and density are `coat_f` and `coat_pdf`: its density is the mixture's; none
+    /// below the surface or where that density is unusable.
+    #[inline(always)]
+    fn drawn(
+        &self,
+        st: &PlasticState<C::Prepared>,
+        wi: Vec3,
+        coat_f: f32,
+        coat_pdf: f32,
+        lobe: Lobes,
+    ) -> Option<BxdfSample<S>> {
         if !(wi.z > 0.0) {
             return None;
         }
@@ -386,12 +420,61 @@ impl<D, S: Spectrum, C: Prepare<Spectrum = f32>> Plastic<D, S, C> {
         if !usable_pdf(pdf) {
             return None;
         }
-        Some(BxdfSample::new(
-            wi,
-            S::splat(coat_f) + self.diffuse(st.t_o, self.coat_albedo_at(wi.z)),
-            pdf,
-            lobe,
-        ))
+        Some(BxdfSample::new(wi, S::splat(coat_f), pdf, lobe))
+    }
+
+    /// The value of a sample for `wo`, `wi` above the surface from the coat's value in `f`
+    /// (as [`sample_unfinished`](Self::sample_unfinished) leaves it), the coat's
+    /// transmittance `t_o` at `wo` and its albedo `e_wi` at `wi`: `f` plus the diffuse term.
+    #[inline(always)]
+    pub(crate) fn finish(&self, f: S, t_o: f32, e_wi: f32) -> S {
+        f + self.diffuse(t_o, e_wi)
+    }
+
+    /// The coat's transmittance `1 − E(cos θo)` at the prepared `wo` (what
+    /// [`finish`](Self::finish) needs of the prepared state).
+    #[inline(always)]
+    pub(crate) fn transmittance(at: &At<PlasticState<C::Prepared>>) -> f32 {
+        at.state.t_o
+    }
+}
+
+impl<D: NormalDistribution, S: Spectrum> Plastic<D, S> {
+    /// [`sample_unfinished`](Self::sample_unfinished) for a batched loop, with the coat's
+    /// masking term `masking`: every lane draws both lobes' directions and keeps the one its
+    /// `uc` picks, so that the loop has no branch between lobes and vectorises. The same
+    /// numbers as the scalar form (`tests/batch.rs` compares them bit for bit): the coat's
+    /// own sample is its `eval_pdf` at the direction it draws, refused where that density is
+    /// unusable, and its `uc` is not used.
+    #[inline(always)]
+    pub(crate) fn sample_lane(
+        &self,
+        at: &At<PlasticState<At<View>>>,
+        u: Vec2,
+        uc: f32,
+        masking: Masking,
+    ) -> Option<BxdfSample<S>> {
+        if !(at.wo.z > 0.0) {
+            return None;
+        }
+        let st = &at.state;
+        let coat = crate::sampling::picks(uc, st.p_coat);
+        let reflected = self.coat.sample_direction(&st.coat, u);
+        let wi = if coat {
+            reflected
+        } else {
+            cosine_hemisphere(u)
+        };
+        let (coat_f, coat_pdf) = self.coat.eval_pdf_lane::<true>(&st.coat, wi, masking);
+        if coat && !usable_pdf(coat_pdf) {
+            return None;
+        }
+        let lobe = if coat {
+            Lobes::GLOSSY_REFLECTION
+        } else {
+            Lobes::DIFFUSE_REFLECTION
+        };
+        self.drawn(st, wi, coat_f, coat_pdf, lobe)
     }
 }
 
