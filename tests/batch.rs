@@ -598,10 +598,10 @@ fn the_compensated_models_equal_the_scalar_path() {
     assert_both_lobes("plastic compensated", &lobes);
 }
 
-/// The loops that read a table run 256 lanes at a time (the table looked up in passes of
-/// their own: the energy-compensated microfacet model's three, the plastic's `eval`): batches
-/// of no lane, of one, and ending just before, at and just after a chunk's end, equal the
-/// scalar calls lane by lane, bit for bit, for both compensations. (The other tests' batches
+/// The loops that read a table run 256 lanes at a time (the tables looked up in passes of
+/// their own: the energy-compensated microfacet model's, for both compensations, and both
+/// plastics'): batches of no lane, of one, and ending just before, at and just after a
+/// chunk's end, equal the scalar calls lane by lane, bit for bit. (The other tests' batches
 /// have 4,099 lanes: sixteen whole chunks and three lanes.)
 #[test]
 fn the_chunked_loops_equal_the_scalar_path_at_every_chunk_boundary() {
@@ -619,6 +619,8 @@ fn the_chunked_loops_equal_the_scalar_path_at_every_chunk_boundary() {
     let glass = Eta::new(1.5).unwrap();
     let plastic = Plastic::new(Vec3::new(0.8, 0.5, 0.2), Ggx::isotropic(a(0.4)), glass);
     at_every_chunk_boundary("plastic", &plastic.unwrap());
+    let compensated = Plastic::compensated(Vec3::new(0.8, 0.5, 0.2), Ggx::isotropic(a(0.4)), glass);
+    at_every_chunk_boundary("compensated plastic", &compensated.unwrap());
 }
 
 /// [`the_chunked_loops_equal_the_scalar_path_at_every_chunk_boundary`] for one RGB model.

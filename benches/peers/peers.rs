@@ -5,7 +5,7 @@
 //! Then lobe alone, scalar against batched, where the peer has no model: the GGX rough
 //! dielectric (η 1.5, the sides mixed as in the shading benchmarks), and the
 //! energy-compensated GGX gold conductor and rough glass (Kulla & Conty's lobe on top), and
-//! the GGX plastic.
+//! the GGX plastic, plain and with the compensated coat.
 //!
 //! Last, the ceiling of batching for work bound by the divider: one square root and one
 //! division per element, scalar (measured as lobe's scalar calls are) against the same loop
@@ -394,7 +394,7 @@ fn main() {
     }
 
     // Pairs of (lobe scalar, lobe batched) for work the peer has no model of: the rough
-    // dielectric (the sides mixed), the compensated models, the plastic, and the divider
+    // dielectric (the sides mixed), the compensated models, the plastics, and the divider
     // alone.
     let glass = RoughDielectric::new(
         Ggx::isotropic(Alpha::new(ALPHA).unwrap()),
@@ -433,6 +433,18 @@ fn main() {
     pairs.extend(scalar_and_batched(
         "GGX plastic RGB",
         &plastic,
+        &inputs,
+        &soa,
+    ));
+    let compensated_plastic = Plastic::compensated(
+        Vec3::new(0.8, 0.6, 0.4),
+        Ggx::isotropic(Alpha::new(ALPHA).unwrap()),
+        Eta::new(1.5).unwrap(),
+    )
+    .unwrap();
+    pairs.extend(scalar_and_batched(
+        "compensated GGX plastic RGB",
+        &compensated_plastic,
         &inputs,
         &soa,
     ));

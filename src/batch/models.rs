@@ -17,8 +17,8 @@ use super::tabulated::chunked;
 use super::tabulated::{TableLanes, TableOp, TableSample, TableSampleOp};
 use super::{Lanes, LengthError, SampleOut, Vec2s, Vec3s, run};
 use super::{eval_kernel, pdf_kernel, sample_kernel};
-use crate::bxdf::PlasticState;
 use crate::bxdf::{At, BxdfSample, CompensatedState, Compensation, Prepare};
+use crate::bxdf::{CompensatedPlastic, PlasticState};
 use crate::microfacet::Masking;
 use crate::microfacet::View;
 use crate::tables::CHUNK;
@@ -179,6 +179,8 @@ macro_rules! by_compensation {
 }
 
 impl<D: NormalDistribution, F: FresnelAverage> TableLanes for CompensatedMicrofacet<D, F> {
+    type Looked = f32;
+
     #[inline(always)]
     fn look_up(&self, z: &[f32], e: &mut [f32; CHUNK]) {
         self.albedo().e_chunk(z, e);
@@ -334,12 +336,34 @@ where
     }
 }
 
-/// `Batch` for a plastic with the coat `$coat`: its `eval` and `sample` loops with the coat's
-/// masking term fixed, run by `$run` (`run`, or `chunked`: a chunk of lanes at a time). The
-/// constructors give every coat height-correlated masking; a coat with another term would
-/// take the plain loops (the same numbers, not vectorised).
+/// Whether a plastic's coat is the one its batched loops fix: height-correlated masking and,
+/// for the compensated coat, Kulla & Conty's compensation. The constructors build no other; a
+/// coat that was not would take the plain loops (the same numbers, not vectorised).
+trait FixedCoat {
+    /// True for the coat the loops fix.
+    fn fixed(&self) -> bool;
+}
+
+impl<D: NormalDistribution> FixedCoat for Microfacet<D, Dielectric> {
+    #[inline(always)]
+    fn fixed(&self) -> bool {
+        self.masking() == Masking::HeightCorrelated
+    }
+}
+
+impl<D: NormalDistribution> FixedCoat for CompensatedMicrofacet<D, Dielectric> {
+    #[inline(always)]
+    fn fixed(&self) -> bool {
+        self.masking() == Masking::HeightCorrelated
+            && self.compensation() == Compensation::KullaConty
+    }
+}
+
+/// `Batch` for a plastic with the coat `$coat`: its loops run a chunk of lanes at a time
+/// (`chunked`), `eval` and `sample` with the coat fixed ([`FixedCoat`]; the density does not
+/// depend on the masking term).
 macro_rules! batch_plastic {
-    ($coat:ty, $run:ident) => {
+    ($coat:ty) => {
         impl<D: NormalDistribution + Clone, S: Spectrum + Lanes> Batch for Plastic<D, S, $coat> {
             fn eval_batch(
                 &self,
@@ -347,12 +371,20 @@ macro_rules! batch_plastic {
                 wi: Vec3s<'_>,
                 f: S::Mut<'_>,
             ) -> Result<(), LengthError> {
-                match self.coat().masking() {
-                    Masking::HeightCorrelated => {
-                        $run(eval_kernel::<_, HeightCorrelatedCoat>(self, wo, wi, f))
-                    }
-                    _ => run(eval_kernel::<_, Plain>(self, wo, wi, f)),
+                if self.coat().fixed() {
+                    chunked(eval_kernel::<_, HeightCorrelatedCoat>(self, wo, wi, f))
+                } else {
+                    run(eval_kernel::<_, Plain>(self, wo, wi, f))
                 }
+            }
+
+            fn pdf_batch(
+                &self,
+                wo: Vec3s<'_>,
+                wi: Vec3s<'_>,
+                pdf: &mut [f32],
+            ) -> Result<(), LengthError> {
+                chunked(pdf_kernel::<_, ()>(self, wo, wi, pdf))
             }
 
             fn sample_batch(
@@ -362,24 +394,26 @@ macro_rules! batch_plastic {
                 uc: &[f32],
                 out: SampleOut<'_, S>,
             ) -> Result<(), LengthError> {
-                match self.coat().masking() {
-                    Masking::HeightCorrelated => $run(sample_kernel::<_, HeightCorrelatedCoat>(
+                if self.coat().fixed() {
+                    chunked(sample_kernel::<_, HeightCorrelatedCoat>(
                         self, wo, u, uc, out,
-                    )),
-                    _ => run(sample_kernel::<_, Plain>(self, wo, u, uc, out)),
+                    ))
+                } else {
+                    run(sample_kernel::<_, Plain>(self, wo, u, uc, out))
                 }
             }
         }
     };
 }
 
-batch_plastic!(Microfacet<D, Dielectric>, chunked);
-batch_plastic!(CompensatedMicrofacet<D, Dielectric>, run);
+batch_plastic!(Microfacet<D, Dielectric>);
+batch_plastic!(CompensatedMicrofacet<D, Dielectric>);
 
 /// The plastic with the plain coat reads its own coat-albedo table at `wo` and `wi`: its
-/// `eval` and `sample` loops look it up a chunk of lanes at a time (the compensated coat
-/// reads a second table, its own, per lane: that plastic's loops stay as they are).
+/// `eval` and `sample` loops look it up a chunk of lanes at a time.
 impl<D: NormalDistribution, S: Spectrum> TableLanes for Plastic<D, S, Microfacet<D, Dielectric>> {
+    type Looked = f32;
+
     #[inline(always)]
     fn look_up(&self, z: &[f32], e: &mut [f32; CHUNK]) {
         self.coat_albedo_chunk(z, e);
@@ -387,7 +421,7 @@ impl<D: NormalDistribution, S: Spectrum> TableLanes for Plastic<D, S, Microfacet
 
     #[inline(always)]
     fn prepare_from(&self, wo: Vec3, e_wo: f32) -> Self::Prepared {
-        self.prepare_given(wo, e_wo)
+        self.prepare_given(wo, e_wo, self.coat().prepare(wo))
     }
 }
 
@@ -401,7 +435,10 @@ impl<D: NormalDistribution, S: Spectrum> TableOp<Plastic<D, S, Microfacet<D, Die
         wi: Vec3,
         e_wi: f32,
     ) -> S {
-        m.eval_given::<Self>(at, wi, || e_wi)
+        let coat = |coat: &Microfacet<D, Dielectric>, at: &At<View>| {
+            <Self as CoatCalls<_>>::eval(coat, at, wi)
+        };
+        m.eval_given(at, wi, coat, || e_wi)
     }
 }
 
@@ -426,6 +463,76 @@ impl<D: NormalDistribution, S: Spectrum> TableSampleOp<Plastic<D, S>> for Height
     fn sample(
         m: &Plastic<D, S>,
         at: &At<PlasticState<At<View>>>,
+        u: Vec2,
+        uc: f32,
+    ) -> Option<BxdfSample<S>> {
+        m.sample_lane(at, u, uc, Masking::HeightCorrelated)
+    }
+}
+
+/// The compensated plastic reads two tables at `wo` and `wi`, its own coat albedo and the
+/// coat's `E(μ)`: its loops look both up a chunk of lanes at a time.
+impl<D: NormalDistribution, S: Spectrum> TableLanes for CompensatedPlastic<D, S> {
+    type Looked = (f32, f32);
+
+    #[inline(always)]
+    fn look_up(&self, z: &[f32], e: &mut [(f32, f32); CHUNK]) {
+        let (mut plastic, mut coat) = ([0.0; CHUNK], [0.0; CHUNK]);
+        self.coat_albedo_chunk(z, &mut plastic);
+        self.coat().albedo().e_chunk(z, &mut coat);
+        for ((e, &p), &c) in e.iter_mut().zip(&plastic).zip(&coat) {
+            *e = (p, c);
+        }
+    }
+
+    #[inline(always)]
+    fn prepare_from(&self, wo: Vec3, (e_wo, coat_e_wo): (f32, f32)) -> Self::Prepared {
+        let coat = self.coat().prepare_given(wo, || coat_e_wo);
+        self.prepare_given(wo, e_wo, coat)
+    }
+}
+
+impl<D: NormalDistribution, S: Spectrum> TableOp<CompensatedPlastic<D, S>>
+    for HeightCorrelatedCoat
+{
+    #[inline(always)]
+    fn eval(
+        m: &CompensatedPlastic<D, S>,
+        at: &At<PlasticState<CompensatedState<At<View>, f32>>>,
+        wi: Vec3,
+        (e_wi, coat_e_wi): (f32, f32),
+    ) -> S {
+        let coat = |coat: &CompensatedMicrofacet<D, Dielectric>, at: &CompensatedState<_, _>| {
+            let (masking, kulla) = (Masking::HeightCorrelated, Compensation::KullaConty);
+            coat.eval_given::<false>(at, wi, masking, kulla, || coat_e_wi)
+        };
+        m.eval_given(at, wi, coat, || e_wi)
+    }
+}
+
+impl<D: NormalDistribution, S: Spectrum> TableSample for CompensatedPlastic<D, S> {
+    type Outgoing = (f32, f32);
+
+    #[inline(always)]
+    fn outgoing(at: &Self::Prepared) -> (f32, f32) {
+        Self::outgoing(at)
+    }
+
+    #[inline(always)]
+    fn finish(&self, f: S, outgoing: (f32, f32), e_wi: (f32, f32)) -> S {
+        self.finish_compensated(f, outgoing, e_wi)
+    }
+}
+
+impl<D: NormalDistribution, S: Spectrum> TableSampleOp<CompensatedPlastic<D, S>>
+    for HeightCorrelatedCoat
+{
+    const UNFINISHED: bool = true;
+
+    #[inline(always)]
+    fn sample(
+        m: &CompensatedPlastic<D, S>,
+        at: &At<PlasticState<CompensatedState<At<View>, f32>>>,
         u: Vec2,
         uc: f32,
     ) -> Option<BxdfSample<S>> {

@@ -24,32 +24,59 @@ use crate::tables::AlbedoRow;
 use crate::tables::CHUNK;
 use glam::{Vec2, Vec3};
 
+/// A lane's entry in a chunk's buffer, and what fills the buffer before the lanes do.
+pub(crate) trait Slot: Copy {
+    /// The filler.
+    fn placeholder() -> Self;
+}
+
+impl<S: Spectrum> Slot for S {
+    #[inline(always)]
+    fn placeholder() -> S {
+        S::zero()
+    }
+}
+
+impl Slot for (f32, f32) {
+    #[inline(always)]
+    fn placeholder() -> Self {
+        (0.0, 0.0)
+    }
+}
+
 /// A model whose prepared state reads an albedo table at `wo`, and whose value reads it at
-/// `wi`.
+/// `wi` (or two tables: the compensated plastic's own and its coat's).
 pub(crate) trait TableLanes: Prepare {
-    /// The table's value at each direction whose `z` is `z[k]`, into `e[k]` (at most
+    /// What the tables give at one direction.
+    type Looked: Slot;
+    /// The tables' values at each direction whose `z` is `z[k]`, into `e[k]` (at most
     /// [`CHUNK`] lanes; [`AlbedoRow::e_chunk`]).
-    fn look_up(&self, z: &[f32], e: &mut [f32; CHUNK]);
-    /// [`Prepare::prepare`] with the table's value at `wo` given as `e_wo`.
-    fn prepare_from(&self, wo: Vec3, e_wo: f32) -> Self::Prepared;
+    fn look_up(&self, z: &[f32], e: &mut [Self::Looked; CHUNK]);
+    /// [`Prepare::prepare`] with the tables' values at `wo` given as `e_wo`.
+    fn prepare_from(&self, wo: Vec3, e_wo: Self::Looked) -> Self::Prepared;
 }
 
 /// A [`TableLanes`] model whose sample, drawn, may be left unfinished for want of the
 /// table's value at the sampled direction.
 pub(crate) trait TableSample: TableLanes {
     /// What [`finish`](Self::finish) needs of the prepared state.
-    type Outgoing: Spectrum;
+    type Outgoing: Slot;
     /// That part of the prepared state.
     fn outgoing(at: &Self::Prepared) -> Self::Outgoing;
     /// An unfinished sample's value, from its value `f` as drawn, what it needs of the
-    /// prepared state, and the table's value `e_wi` at the sampled direction.
-    fn finish(&self, f: Self::Spectrum, outgoing: Self::Outgoing, e_wi: f32) -> Self::Spectrum;
+    /// prepared state, and the tables' values `e_wi` at the sampled direction.
+    fn finish(
+        &self,
+        f: Self::Spectrum,
+        outgoing: Self::Outgoing,
+        e_wi: Self::Looked,
+    ) -> Self::Spectrum;
 }
 
 /// How one lane's value is computed from the prepared state and the table's value at `wi`.
 pub(crate) trait TableOp<M: TableLanes> {
-    /// `eval(wo, wi)`, with `e_wi` the table's value at `wi`.
-    fn eval(m: &M, at: &M::Prepared, wi: Vec3, e_wi: f32) -> M::Spectrum;
+    /// `eval(wo, wi)`, with `e_wi` the tables' values at `wi`.
+    fn eval(m: &M, at: &M::Prepared, wi: Vec3, e_wi: M::Looked) -> M::Spectrum;
 }
 
 /// How one lane's sample is drawn from the prepared state.
@@ -86,7 +113,8 @@ where
         let (wo, wi) = (cut(wo, n), cut(wi, n));
         let mut f = M::Spectrum::truncate(f, n);
         let m = m.clone();
-        let (mut e_wo, mut e_wi) = ([0.0; CHUNK], [0.0; CHUNK]);
+        let placeholder = M::Looked::placeholder();
+        let (mut e_wo, mut e_wi) = ([placeholder; CHUNK], [placeholder; CHUNK]);
         for (start, end) in chunks(n) {
             m.look_up(&wo.z[start..end], &mut e_wo);
             m.look_up(&wi.z[start..end], &mut e_wi);
@@ -108,7 +136,7 @@ impl<M: TableLanes + Clone> Kernel for Chunked<PdfKernel<'_, '_, M, ()>> {
         let (wo, wi) = (cut(wo, n), cut(wi, n));
         let pdf = &mut pdf[..n];
         let m = m.clone();
-        let mut e_wo = [0.0; CHUNK];
+        let mut e_wo = [M::Looked::placeholder(); CHUNK];
         for (start, end) in chunks(n) {
             m.look_up(&wo.z[start..end], &mut e_wo);
             for (k, &e_wo) in (start..end).zip(&e_wo) {
@@ -152,11 +180,12 @@ where
         let (mut wi, mut f): (Vec3sMut<'_>, _) = (wi.truncate(n), M::Spectrum::truncate(f, n));
         let (pdf, lobe, eta) = (&mut pdf[..n], &mut lobe[..n], &mut eta[..n]);
         let m = m.clone();
-        let (mut e_wo, mut e_wi) = ([0.0; CHUNK], [0.0; CHUNK]);
+        let placeholder = M::Looked::placeholder();
+        let (mut e_wo, mut e_wi) = ([placeholder; CHUNK], [placeholder; CHUNK]);
         // Per lane of the chunk: the value as drawn, what finishing it needs, and whether
         // there is a sample.
         let mut drawn = [M::Spectrum::zero(); CHUNK];
-        let mut outgoing = [M::Outgoing::zero(); CHUNK];
+        let mut outgoing = [M::Outgoing::placeholder(); CHUNK];
         let mut sampled = [false; CHUNK];
         for (start, end) in chunks(n) {
             m.look_up(&wo.z[start..end], &mut e_wo);

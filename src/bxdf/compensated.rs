@@ -1,7 +1,9 @@
 //! Energy compensation of the microfacet reflection model: Kulla & Conty's multiple-scattering
 //! lobe, or Turquin's scaling.
 
-use super::{At, BxdfSample, Lobes, Microfacet, Prepare, both_above, usable_pdf};
+use super::{
+    At, BxdfSample, Lobes, Microfacet, Prepare, both_above, glossy_or_diffuse, usable_pdf,
+};
 use crate::fresnel::{Fresnel, FresnelAverage};
 use crate::microfacet::{Masking, NormalDistribution, View};
 use crate::param::ParamError;
@@ -316,7 +318,7 @@ impl<D: NormalDistribution, F: FresnelAverage> CompensatedMicrofacet<D, F> {
         match self.compensation {
             Compensation::KullaConty if both_above(at.inner.wo, wi) => (
                 self.finish(f, at.outgoing, self.albedo.e(wi.z)),
-                (1.0 - p) * pdf + p * cosine_hemisphere_pdf(wi.z),
+                Self::mixture_pdf(at, pdf, wi.z),
             ),
             Compensation::KullaConty => (f, (1.0 - p) * pdf),
             Compensation::Turquin => (Self::turquin(f, at.outgoing), pdf),
@@ -355,6 +357,39 @@ impl<D: NormalDistribution, F: FresnelAverage> CompensatedMicrofacet<D, F> {
         f + outgoing * (1.0 - e_wi)
     }
 
+    /// Kulla & Conty's density for `wo`, `wi` above the surface: the single-scattering lobe's
+    /// density `pdf` and the compensation lobe's cosine-weighted one at `cos θi = cos_i`,
+    /// mixed by the probability of drawing the compensation lobe.
+    #[inline(always)]
+    pub(crate) fn mixture_pdf(
+        at: &CompensatedState<At<View>, F::Spectrum>,
+        pdf: f32,
+        cos_i: f32,
+    ) -> f32 {
+        let p = at.probability;
+        (1.0 - p) * pdf + p * cosine_hemisphere_pdf(cos_i)
+    }
+
+    /// What a batched lane of [`sample_unfinished`](Self::sample_unfinished) draws for `u`:
+    /// the compensation lobe's cosine-weighted direction where `diffuse`, else `wo` reflected
+    /// about a normal drawn from the distribution (both formed, one kept, so that a loop has
+    /// no branch between lobes), and the single-scattering lobe's value and density there,
+    /// evaluated without early returns (zeros for an unusable pair).
+    #[inline(always)]
+    pub(crate) fn draw_lane(
+        &self,
+        at: &CompensatedState<At<View>, F::Spectrum>,
+        u: Vec2,
+        diffuse: bool,
+        masking: Masking,
+    ) -> (Vec3, F::Spectrum, f32) {
+        let inner = &self.inner;
+        let (cosine, reflected) = (cosine_hemisphere(u), inner.sample_direction(&at.inner, u));
+        let wi = if diffuse { cosine } else { reflected };
+        let (f, pdf) = inner.eval_pdf_lane::<true>(&at.inner, wi, masking);
+        (wi, f, pdf)
+    }
+
     /// [`sample_with`](Self::sample_with) but for the table's `E(μi)` at the sampled
     /// direction: under Kulla & Conty's compensation, the sample's `f` is the
     /// single-scattering lobe's value alone, to [`finish`](Self::finish); under Turquin's
@@ -386,18 +421,11 @@ impl<D: NormalDistribution, F: FresnelAverage> CompensatedMicrofacet<D, F> {
         // The single-scattering lobe's value and density at wi: from its own sample when it
         // drew wi (the numbers its eval and pdf give), else evaluated together.
         let (wi, f, pdf, lobe) = if LANES {
-            let (cosine, reflected) = (cosine_hemisphere(u), inner.sample_direction(&at.inner, u));
-            let wi = if diffuse { cosine } else { reflected };
-            let (f, pdf) = inner.eval_pdf_lane::<true>(&at.inner, wi, masking);
+            let (wi, f, pdf) = self.draw_lane(at, u, diffuse, masking);
             if !diffuse && !usable_pdf(pdf) {
                 return None;
             }
-            let lobe = if diffuse {
-                Lobes::DIFFUSE_REFLECTION
-            } else {
-                Lobes::GLOSSY_REFLECTION
-            };
-            (wi, f, pdf, lobe)
+            (wi, f, pdf, glossy_or_diffuse(!diffuse))
         } else if diffuse {
             let wi = cosine_hemisphere(u);
             let (f, pdf) = inner.eval_pdf_with::<false>(&at.inner, wi, masking);
@@ -410,7 +438,7 @@ impl<D: NormalDistribution, F: FresnelAverage> CompensatedMicrofacet<D, F> {
         if !(wi.z > 0.0) {
             return None;
         }
-        let pdf = (1.0 - p) * pdf + p * cosine_hemisphere_pdf(wi.z);
+        let pdf = Self::mixture_pdf(at, pdf, wi.z);
         if !usable_pdf(pdf) {
             return None;
         }
@@ -437,7 +465,7 @@ impl<D: NormalDistribution, F: FresnelAverage> Prepare for CompensatedMicrofacet
         let pdf = self.inner.pdf_prepared(&at.inner, wi);
         let p = at.probability;
         if p > 0.0 && both_above(at.inner.wo, wi) {
-            (1.0 - p) * pdf + p * cosine_hemisphere_pdf(wi.z)
+            Self::mixture_pdf(at, pdf, wi.z)
         } else {
             (1.0 - p) * pdf
         }

@@ -829,6 +829,19 @@ pub(crate) fn usable_pdf(pdf: f32) -> bool {
     (f32::MIN_POSITIVE..f32::INFINITY).contains(&pdf)
 }
 
+/// The lobe a sample of a glossy and a diffuse reflection lobe came from, chosen per lane
+/// in a batched loop: [`Lobes::GLOSSY_REFLECTION`] where `glossy`, else
+/// [`Lobes::DIFFUSE_REFLECTION`].
+#[inline(always)]
+#[must_use]
+pub(crate) fn glossy_or_diffuse(glossy: bool) -> Lobes {
+    if glossy {
+        Lobes::GLOSSY_REFLECTION
+    } else {
+        Lobes::DIFFUSE_REFLECTION
+    }
+}
+
 /// `wo` and `wi` both strictly above the surface: the support of a one-sided BRDF.
 #[inline(always)]
 #[must_use]

@@ -1,8 +1,8 @@
 //! A diffuse base under a rough dielectric coat: the glazed material's rough variant.
 
 use super::{
-    At, Bxdf, BxdfSample, CompensatedMicrofacet, Compensation, Lobes, Microfacet, Prepare,
-    both_above, usable_pdf,
+    At, Bxdf, BxdfSample, CompensatedMicrofacet, CompensatedState, Compensation, Lobes, Microfacet,
+    Prepare, both_above, glossy_or_diffuse, usable_pdf,
 };
 use crate::fresnel::Dielectric;
 use crate::microfacet::{Masking, NormalDistribution, View};
@@ -297,14 +297,19 @@ impl<D, S: Spectrum, C: Prepare<Spectrum = f32>> Plastic<D, S, C> {
         &self.coat
     }
 
-    /// [`Prepare::prepare`] with the coat's albedo at `wo` given as `e` (a batched loop looks
-    /// it up beforehand).
+    /// [`Prepare::prepare`] with the coat's albedo at `wo` given as `e` and the coat's
+    /// prepared state as `coat` (a batched loop looks the tables they read up beforehand).
     #[inline(always)]
-    pub(crate) fn prepare_given(&self, wo: Vec3, e: f32) -> At<PlasticState<C::Prepared>> {
+    pub(crate) fn prepare_given(
+        &self,
+        wo: Vec3,
+        e: f32,
+        coat: C::Prepared,
+    ) -> At<PlasticState<C::Prepared>> {
         At {
             wo,
             state: PlasticState {
-                coat: self.coat.prepare(wo),
+                coat,
                 p_coat: self.coat_probability(e),
                 t_o: 1.0 - e,
             },
@@ -318,23 +323,26 @@ impl<D, S: Spectrum, C: Prepare<Spectrum = f32>> Plastic<D, S, C> {
         at: &At<PlasticState<C::Prepared>>,
         wi: Vec3,
     ) -> S {
-        self.eval_given::<O>(at, wi, || self.coat_albedo_at(wi.z))
+        let coat = |coat: &C, at: &C::Prepared| O::eval(coat, at, wi);
+        self.eval_given(at, wi, coat, || self.coat_albedo_at(wi.z))
     }
 
-    /// [`eval_with`](Self::eval_with) with the coat's albedo at `wi` from `e_wi` (called
-    /// only for a pair above the surface; a batched loop looks it up beforehand).
+    /// [`eval_with`](Self::eval_with) with the coat's value at `wi` from `coat_f` (given the
+    /// coat and its prepared state) and the coat's albedo at `wi` from `e_wi` (both called
+    /// only for a pair above the surface; a batched loop looks the tables up beforehand).
     #[inline(always)]
-    pub(crate) fn eval_given<O: CoatCalls<C>>(
+    pub(crate) fn eval_given(
         &self,
         at: &At<PlasticState<C::Prepared>>,
         wi: Vec3,
+        coat_f: impl FnOnce(&C, &C::Prepared) -> f32,
         e_wi: impl FnOnce() -> f32,
     ) -> S {
         if !both_above(at.wo, wi) {
             return S::zero();
         }
         let st = &at.state;
-        S::splat(O::eval(&self.coat, &st.coat, wi)) + self.diffuse(st.t_o, e_wi())
+        S::splat(coat_f(&self.coat, &st.coat)) + self.diffuse(st.t_o, e_wi())
     }
 
     /// [`Prepare::eval_pdf_prepared`], calling the coat through `O`.
@@ -439,42 +447,133 @@ impl<D, S: Spectrum, C: Prepare<Spectrum = f32>> Plastic<D, S, C> {
     }
 }
 
-impl<D: NormalDistribution, S: Spectrum> Plastic<D, S> {
-    /// [`sample_unfinished`](Self::sample_unfinished) for a batched loop, with the coat's
-    /// masking term `masking`: every lane draws both lobes' directions and keeps the one its
-    /// `uc` picks, so that the loop has no branch between lobes and vectorises. The same
-    /// numbers as the scalar form (`tests/batch.rs` compares them bit for bit): the coat's
-    /// own sample is its `eval_pdf` at the direction it draws, refused where that density is
-    /// unusable, and its `uc` is not used.
-    #[inline(always)]
-    pub(crate) fn sample_lane(
+/// How a plastic's batched lane draws from its coat: without a branch between the lobes, so
+/// that the loop vectorises ([`Plastic::sample_lane`]).
+pub(crate) trait LaneCoat: Prepare<Spectrum = f32> {
+    /// For a lane that picked the coat's lobe (`coat`) or the plastic's diffuse lobe (the
+    /// cosine-weighted direction for `u`): the direction, the coat's value (unfinished, for a
+    /// coat that reads a table at it) and density there, and whether the coat's glossy lobe
+    /// drew it; `None` where the coat's own sample refuses it. `uc` is what is left of the
+    /// plastic's random number for the coat's own choice of lobe.
+    fn draw_lane(
         &self,
-        at: &At<PlasticState<At<View>>>,
+        at: &Self::Prepared,
         u: Vec2,
         uc: f32,
+        coat: bool,
         masking: Masking,
-    ) -> Option<BxdfSample<S>> {
-        if !(at.wo.z > 0.0) {
-            return None;
-        }
-        let st = &at.state;
-        let coat = crate::sampling::picks(uc, st.p_coat);
-        let reflected = self.coat.sample_direction(&st.coat, u);
+    ) -> Option<(Vec3, f32, f32, bool)>;
+}
+
+/// The plain coat: one glossy lobe, its sample the lobe's `eval_pdf` at the direction it
+/// draws, refused where that density is unusable.
+impl<D: NormalDistribution> LaneCoat for Microfacet<D, Dielectric> {
+    #[inline(always)]
+    fn draw_lane(
+        &self,
+        at: &At<View>,
+        u: Vec2,
+        _uc: f32,
+        coat: bool,
+        masking: Masking,
+    ) -> Option<(Vec3, f32, f32, bool)> {
+        let reflected = self.sample_direction(at, u);
         let wi = if coat {
             reflected
         } else {
             cosine_hemisphere(u)
         };
-        let (coat_f, coat_pdf) = self.coat.eval_pdf_lane::<true>(&st.coat, wi, masking);
-        if coat && !usable_pdf(coat_pdf) {
+        let (f, pdf) = self.eval_pdf_lane::<true>(at, wi, masking);
+        if coat && !usable_pdf(pdf) {
             return None;
         }
-        let lobe = if coat {
-            Lobes::GLOSSY_REFLECTION
-        } else {
-            Lobes::DIFFUSE_REFLECTION
-        };
-        self.drawn(st, wi, coat_f, coat_pdf, lobe)
+        Some((wi, f, pdf, coat))
+    }
+}
+
+/// The compensated coat (Kulla & Conty's compensation, the constructor's): its compensation
+/// lobe and the plastic's diffuse lobe draw the same cosine-weighted direction, so a lane
+/// forms it and the reflected one, keeps one and evaluates the single-scattering lobe there
+/// once ([`CompensatedMicrofacet::draw_lane`]); the value is left for the compensation lobe's.
+impl<D: NormalDistribution> LaneCoat for CompensatedMicrofacet<D, Dielectric> {
+    #[inline(always)]
+    fn draw_lane(
+        &self,
+        at: &CompensatedState<At<View>, f32>,
+        u: Vec2,
+        uc: f32,
+        coat: bool,
+        masking: Masking,
+    ) -> Option<(Vec3, f32, f32, bool)> {
+        let specular = coat & !crate::sampling::picks(uc, at.probability);
+        let (wi, f, pdf) = self.draw_lane(at, u, !specular, masking);
+        // The coat's own sample refuses its reflected direction where the single-scattering
+        // density is unusable, and any direction where its mixture's is; the plastic's diffuse
+        // lobe takes the coat's value and density as they are (the plastic's mixture decides).
+        if specular && !usable_pdf(pdf) {
+            return None;
+        }
+        if !(wi.z > 0.0) {
+            return None;
+        }
+        let pdf = Self::mixture_pdf(at, pdf, wi.z);
+        if coat && !usable_pdf(pdf) {
+            return None;
+        }
+        Some((wi, f, pdf, specular))
+    }
+}
+
+impl<D, S: Spectrum, C: Prepare<Spectrum = f32>> Plastic<D, S, C> {
+    /// [`sample_unfinished`](Self::sample_unfinished) for a batched loop, with the coat's
+    /// masking term `masking`: every lane forms the directions of the lobes it might pick and
+    /// keeps one ([`LaneCoat`]), so that the loop has no branch between lobes and vectorises.
+    /// The same numbers as the scalar form (`tests/batch.rs` compares them bit for bit).
+    #[inline(always)]
+    pub(crate) fn sample_lane(
+        &self,
+        at: &At<PlasticState<C::Prepared>>,
+        u: Vec2,
+        uc: f32,
+        masking: Masking,
+    ) -> Option<BxdfSample<S>>
+    where
+        C: LaneCoat,
+    {
+        if !(at.wo.z > 0.0) {
+            return None;
+        }
+        let st = &at.state;
+        let coat = crate::sampling::picks(uc, st.p_coat);
+        let uc = reuse_uniform(uc, 0.0, st.p_coat);
+        let (wi, f, pdf, glossy) = self.coat.draw_lane(&st.coat, u, uc, coat, masking)?;
+        self.drawn(st, wi, f, pdf, glossy_or_diffuse(glossy))
+    }
+}
+
+impl<D: NormalDistribution, S: Spectrum> CompensatedPlastic<D, S> {
+    /// What [`finish_compensated`](Self::finish_compensated) needs of the prepared state:
+    /// the coat's transmittance and its compensation factor at `wo`.
+    #[inline(always)]
+    pub(crate) fn outgoing(at: &At<PlasticState<CompensatedState<At<View>, f32>>>) -> (f32, f32) {
+        (at.state.t_o, at.state.coat.outgoing)
+    }
+
+    /// The value of a sample that [`sample_lane`](Self::sample_lane) left unfinished, from
+    /// the coat's single-scattering value in `f`, the coat's transmittance `t_o` and its
+    /// compensation factor `outgoing` at `wo`, and at the sampled direction the plastic's
+    /// coat albedo `e_wi` and the coat's own table's `E(μi)`, `coat_e_wi`: the coat's
+    /// compensation lobe added to its value, then the diffuse term.
+    #[inline(always)]
+    pub(crate) fn finish_compensated(
+        &self,
+        f: S,
+        (t_o, outgoing): (f32, f32),
+        (e_wi, coat_e_wi): (f32, f32),
+    ) -> S {
+        // `f` is the coat's value in every channel.
+        let coat_f = self.coat.finish(f.channel(0), outgoing, coat_e_wi);
+        self.finish(S::splat(coat_f), t_o, e_wi)
     }
 }
 
@@ -484,7 +583,7 @@ impl<D, S: Spectrum, C: Prepare<Spectrum = f32>> Prepare for Plastic<D, S, C> {
 
     #[inline(always)]
     fn prepare(&self, wo: Vec3) -> Self::Prepared {
-        self.prepare_given(wo, self.coat_albedo_at(wo.z))
+        self.prepare_given(wo, self.coat_albedo_at(wo.z), self.coat.prepare(wo))
     }
 
     #[inline(always)]
