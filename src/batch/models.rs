@@ -435,10 +435,8 @@ impl<D: NormalDistribution, S: Spectrum> TableOp<Plastic<D, S, Microfacet<D, Die
         wi: Vec3,
         e_wi: f32,
     ) -> S {
-        let coat = |coat: &Microfacet<D, Dielectric>, at: &At<View>| {
-            <Self as CoatCalls<_>>::eval(coat, at, wi)
-        };
-        m.eval_given(at, wi, coat, || e_wi)
+        let coat_f = <Self as CoatCalls<_>>::eval(m.coat(), Plastic::<D, S>::coat_state(at), wi);
+        m.eval_given(at, wi, coat_f, e_wi)
     }
 }
 
@@ -502,11 +500,12 @@ impl<D: NormalDistribution, S: Spectrum> TableOp<CompensatedPlastic<D, S>>
         wi: Vec3,
         (e_wi, coat_e_wi): (f32, f32),
     ) -> S {
-        let coat = |coat: &CompensatedMicrofacet<D, Dielectric>, at: &CompensatedState<_, _>| {
-            let (masking, kulla) = (Masking::HeightCorrelated, Compensation::KullaConty);
-            coat.eval_given::<false>(at, wi, masking, kulla, || coat_e_wi)
-        };
-        m.eval_given(at, wi, coat, || e_wi)
+        let (masking, kulla) = (Masking::HeightCorrelated, Compensation::KullaConty);
+        let coat_at = CompensatedPlastic::<D, S>::coat_state(at);
+        let coat_f = m
+            .coat()
+            .eval_given::<false>(coat_at, wi, masking, kulla, || coat_e_wi);
+        m.eval_given(at, wi, coat_f, e_wi)
     }
 }
 

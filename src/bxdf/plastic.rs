@@ -323,26 +323,36 @@ impl<D, S: Spectrum, C: Prepare<Spectrum = f32>> Plastic<D, S, C> {
         at: &At<PlasticState<C::Prepared>>,
         wi: Vec3,
     ) -> S {
-        let coat = |coat: &C, at: &C::Prepared| O::eval(coat, at, wi);
-        self.eval_given(at, wi, coat, || self.coat_albedo_at(wi.z))
+        if !both_above(at.wo, wi) {
+            return S::zero();
+        }
+        let coat_f = O::eval(&self.coat, &at.state.coat, wi);
+        self.eval_given(at, wi, coat_f, self.coat_albedo_at(wi.z))
     }
 
-    /// [`eval_with`](Self::eval_with) with the coat's value at `wi` from `coat_f` (given the
-    /// coat and its prepared state) and the coat's albedo at `wi` from `e_wi` (both called
-    /// only for a pair above the surface; a batched loop looks the tables up beforehand).
+    /// [`eval_with`](Self::eval_with) with the coat's value `coat_f` and its albedo `e_wi` at
+    /// `wi` given (a batched loop evaluates the coat in every lane and looks the table up
+    /// beforehand): zero unless both directions are above the surface. (The coat's value is
+    /// a number, not a closure: with the coat's evaluation in a closure, LLVM kept it out of
+    /// line and the scalar `eval` took twice as long.)
     #[inline(always)]
     pub(crate) fn eval_given(
         &self,
         at: &At<PlasticState<C::Prepared>>,
         wi: Vec3,
-        coat_f: impl FnOnce(&C, &C::Prepared) -> f32,
-        e_wi: impl FnOnce() -> f32,
+        coat_f: f32,
+        e_wi: f32,
     ) -> S {
         if !both_above(at.wo, wi) {
             return S::zero();
         }
-        let st = &at.state;
-        S::splat(coat_f(&self.coat, &st.coat)) + self.diffuse(st.t_o, e_wi())
+        S::splat(coat_f) + self.diffuse(at.state.t_o, e_wi)
+    }
+
+    /// The coat's prepared state within the plastic's.
+    #[inline(always)]
+    pub(crate) fn coat_state(at: &At<PlasticState<C::Prepared>>) -> &C::Prepared {
+        &at.state.coat
     }
 
     /// [`Prepare::eval_pdf_prepared`], calling the coat through `O`.
