@@ -58,12 +58,13 @@
 //! The microfacet models (plain and energy-compensated, reflecting and refracting) have one
 //! loop per masking term, and the energy-compensated microfacet model one per masking term
 //! and compensation (with the choice between Kulla & Conty's lobe and Turquin's scaling
-//! inside the loop, LLVM weighed both samplers in every lane). That model's loops take 256
-//! lanes at a time: a pass looks its albedo table up at each lane's `wo` (and `wi`), the
-//! [`AlbedoRow`](crate::tables::AlbedoRow) lookup split into the positions, which vectorise,
-//! and the reads; then the model's arithmetic runs in a loop that reads no table; `sample`
-//! then looks the table up at the sampled directions and adds the compensation lobe's value
-//! in a last pass. The chunk's buffers are on the stack (up to 11 KiB for a `Vec4` model's
+//! inside the loop, LLVM weighed both samplers in every lane). That model's loops, and both
+//! plastics', take 256 lanes at a time: a pass looks the albedo table up at each lane's `wo`
+//! (and `wi`), the [`AlbedoRow`](crate::tables::AlbedoRow) lookup split into the positions,
+//! which vectorise, and the reads (the compensated plastic looks up two tables, its coat
+//! albedo and the coat's own); then the model's arithmetic runs in a loop that reads no
+//! table; `sample` then looks the tables up at the sampled directions and adds what needs
+//! them (the compensation lobe's value, the plastic's diffuse term) in a last pass. The chunk's buffers are on the stack (up to 11 KiB for a `Vec4` model's
 //! `sample`, zeroed on each call: a batch of a few lanes pays for that, one of 256 or more
 //! does not notice it). A microfacet model's loops, and the energy-compensated microfacet
 //! model's, take the Fresnel term channel by channel
@@ -75,9 +76,12 @@
 //! `sample` instead draws both lobes' directions in every lane and keeps the one the lane
 //! picks, which vectorises for GGX (the same numbers: each lobe's value and density come from
 //! the same arithmetic; Beckmann's sampler, a Newton iteration, runs one lane at a time and
-//! leaves that model's batched `sample` at about the scalar speed either way). The
-//! plastic's loops call its coat with the coat's masking term fixed, as the microfacet
-//! models' loops do (read per lane, the term kept the loop from vectorising). The
+//! leaves that model's batched `sample` at about the scalar speed either way); so do both
+//! plastics' (the plastic's diffuse lobe and the compensated coat's compensation lobe draw
+//! the same cosine-weighted direction, so a lane forms two directions and evaluates the coat
+//! once). The plastics' loops call the coat with its masking term (and the compensated coat's
+//! compensation) fixed, as the microfacet models' loops do (read per lane, the term kept the
+//! loop from vectorising). The
 //! compensated glass's batched `sample` still branches between lobes and runs at about the
 //! scalar speed (drawing from both lobes in every lane did not vectorise either: LLVM's cost
 //! model finds vectorising that loop not beneficial).

@@ -245,7 +245,7 @@ impl<const K: usize, const KULLA: bool, D: NormalDistribution, F: FresnelAverage
         u: Vec2,
         uc: f32,
     ) -> Option<BxdfSample<F::Spectrum>> {
-        m.sample_unfinished::<true>(at, u, uc, MASKINGS[K], Self::COMPENSATION)
+        m.sample_compensated::<true, false>(at, u, uc, MASKINGS[K], Self::COMPENSATION)
     }
 }
 

@@ -1,8 +1,8 @@
-//! The batched loops of a model that reads an albedo table at each lane's directions (the
-//! energy-compensated microfacet model's, the plain-coat plastic's): a chunk of lanes at a
-//! time, the table first
-//! ([`AlbedoRow::e_chunk`]), then the model's arithmetic in a loop that reads no table (and
-//! for `sample`, the table at the sampled directions, then the samples' values).
+//! The batched loops of a model that reads albedo tables at each lane's directions (the
+//! energy-compensated microfacet model's, both plastics'): a chunk of lanes at a time, the
+//! tables first ([`AlbedoRow::e_chunk`]; the compensated plastic reads two, its coat albedo
+//! and the coat's own `E`), then the model's arithmetic in a loop that reads no table (and for
+//! `sample`, the tables at the sampled directions, then the samples' values).
 //!
 //! A read at a different place in each lane is a gather. On a target with AVX2 and no
 //! AVX-512, LLVM's cost model takes gathers for slow and then leaves the whole loop scalar:

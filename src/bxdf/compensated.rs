@@ -282,7 +282,7 @@ impl<D: NormalDistribution, F: FresnelAverage> CompensatedMicrofacet<D, F> {
 
     /// [`eval_with`](Self::eval_with) with `E(μi)` from `e_wi` (called only for a pair above
     /// the surface), as [`prepare_given`](Self::prepare_given) takes `E(μo)`, and the
-    /// compensation a parameter, as [`sample_unfinished`](Self::sample_unfinished) takes it.
+    /// compensation a parameter, as [`sample_compensated`](Self::sample_compensated) takes it.
     #[inline(always)]
     pub(crate) fn eval_given<const PER_CHANNEL: bool>(
         &self,
@@ -338,20 +338,13 @@ impl<D: NormalDistribution, F: FresnelAverage> CompensatedMicrofacet<D, F> {
         uc: f32,
         masking: Masking,
     ) -> Option<BxdfSample<F::Spectrum>> {
-        let s = self.sample_unfinished::<LANES>(at, u, uc, masking, self.compensation)?;
-        Some(match self.compensation {
-            Compensation::KullaConty => BxdfSample {
-                f: self.finish(s.f, at.outgoing, self.albedo.e(s.wi.z)),
-                ..s
-            },
-            Compensation::Turquin => s,
-        })
+        self.sample_compensated::<LANES, true>(at, u, uc, masking, self.compensation)
     }
 
     /// Kulla & Conty's value for `wo`, `wi` above the surface: the single-scattering value
     /// `f` plus the compensation lobe's, `outgoing · (1 − E(μi))`, from the factor `outgoing`
     /// at `wo` and `E(μi)` at `wi` (for `eval`, and for a sample that
-    /// [`sample_unfinished`](Self::sample_unfinished) left unfinished).
+    /// [`sample_compensated`](Self::sample_compensated) left unfinished).
     #[inline(always)]
     pub(crate) fn finish(&self, f: F::Spectrum, outgoing: F::Spectrum, e_wi: f32) -> F::Spectrum {
         f + outgoing * (1.0 - e_wi)
@@ -370,7 +363,7 @@ impl<D: NormalDistribution, F: FresnelAverage> CompensatedMicrofacet<D, F> {
         (1.0 - p) * pdf + p * cosine_hemisphere_pdf(cos_i)
     }
 
-    /// What a batched lane of [`sample_unfinished`](Self::sample_unfinished) draws for `u`:
+    /// What a batched lane of [`sample_compensated`](Self::sample_compensated) draws for `u`:
     /// the compensation lobe's cosine-weighted direction where `diffuse`, else `wo` reflected
     /// about a normal drawn from the distribution (both formed, one kept, so that a loop has
     /// no branch between lobes), and the single-scattering lobe's value and density there,
@@ -390,16 +383,17 @@ impl<D: NormalDistribution, F: FresnelAverage> CompensatedMicrofacet<D, F> {
         (wi, f, pdf)
     }
 
-    /// [`sample_with`](Self::sample_with) but for the table's `E(μi)` at the sampled
-    /// direction: under Kulla & Conty's compensation, the sample's `f` is the
-    /// single-scattering lobe's value alone, to [`finish`](Self::finish); under Turquin's
-    /// scaling the sample is complete. A batched loop looks the table up at the sampled
-    /// directions of a chunk of lanes in between. `compensation` is the model's, a parameter
-    /// so that a batched loop can fix it outside the loop, as `masking`: with the branch
-    /// between the two in the loop, LLVM weighs both samplers in every lane, and leaves the
-    /// loop scalar for a costly Fresnel term (the exact conductor's).
+    /// [`sample_with`](Self::sample_with), finished where `FINISH`. Unfinished, under Kulla &
+    /// Conty's compensation the sample's `f` is the single-scattering lobe's value alone, to
+    /// [`finish`](Self::finish) with the table's `E(μi)` at the sampled direction, which a
+    /// batched loop looks up for a chunk of lanes in between; under Turquin's scaling the
+    /// sample is complete either way. (The scalar path finishes here, in the tail: finished
+    /// by its caller instead, the scalar `sample` took 8–10% longer.) `compensation` is the
+    /// model's, a parameter so that a batched loop can fix it outside the loop, as `masking`:
+    /// with the branch between the two in the loop, LLVM weighs both samplers in every lane,
+    /// and leaves the loop scalar for a costly Fresnel term (the exact conductor's).
     #[inline(always)]
-    pub(crate) fn sample_unfinished<const LANES: bool>(
+    pub(crate) fn sample_compensated<const LANES: bool, const FINISH: bool>(
         &self,
         at: &CompensatedState<At<View>, F::Spectrum>,
         u: Vec2,
@@ -442,6 +436,11 @@ impl<D: NormalDistribution, F: FresnelAverage> CompensatedMicrofacet<D, F> {
         if !usable_pdf(pdf) {
             return None;
         }
+        let f = if FINISH {
+            self.finish(f, at.outgoing, self.albedo.e(wi.z))
+        } else {
+            f
+        };
         Some(BxdfSample::new(wi, f, pdf, lobe))
     }
 }
