@@ -64,9 +64,10 @@
 //! which vectorise, and the reads (the compensated plastic looks up two tables, its coat
 //! albedo and the coat's own); then the model's arithmetic runs in a loop that reads no
 //! table; `sample` then looks the tables up at the sampled directions and adds what needs
-//! them (the compensation lobe's value, the plastic's diffuse term) in a last pass. The chunk's buffers are on the stack (up to 11 KiB for a `Vec4` model's
-//! `sample`, zeroed on each call: a batch of a few lanes pays for that, one of 256 or more
-//! does not notice it). A microfacet model's loops, and the energy-compensated microfacet
+//! them (the compensation lobe's value, the plastic's diffuse term) in a last pass. The chunk's
+//! buffers are on the stack (up to 11 KiB for a `Vec4` model's `sample`, zeroed on each call: a
+//! batch of a few lanes pays for that, one of 256 or more does not notice it). A microfacet
+//! model's loops, and the energy-compensated microfacet
 //! model's, take the Fresnel term channel by channel
 //! ([`Fresnel::eval_per_channel`](crate::fresnel::Fresnel::eval_per_channel)): the exact
 //! conductor's scalar `eval` puts an RGB spectrum's channels side by side in one SIMD
@@ -89,22 +90,21 @@
 //! **Under AVX2 without AVX-512** LLVM's cost model weighs a gather, an `f64` operation and a
 //! branch that a loop must turn into selects more heavily than under AVX-512, and some loops stay
 //! scalar there, or nearly (measured on an AMD EPYC with AVX2 and FMA only, 2026-11-29; the
-//! README's "Against other implementations" has the run): the compensated glass's calls and the
-//! plastic's `sample` (and, not measured, the compensated plastic's `eval` and `sample`), whose
+//! README's "Against other implementations" has the run): the compensated glass's calls, whose
 //! albedo tables are read per lane (a gather; the passes below left the glass's loops scalar, its
-//! lane code branching between sides). The plain-coat plastic's `eval` looks its coat-albedo table
-//! up in the same passes: 0.53× of the old (13.19 → 7.01 ns per lane, three rounds; its `pdf`, not
-//! chunked, 0.62× from the index arithmetic alone). The energy-compensated microfacet model's loops
-//! stayed scalar too until they looked the table up in passes of their own (above), and its
-//! `sample` evaluated the single-scattering lobe without early returns and finished its lanes
-//! without a branch: old and new builds interleaved, five rounds, 4,096 lanes, its batched `eval`
-//! went 0.64× (Schlick) and 0.65× (gold) of the old, `pdf` 0.33× and 0.32×, `sample` 0.43× and
-//! 0.47× (gold 67.86 → 31.64 ns per lane). The rough dielectric's `eval` and `sample` stayed scalar
-//! there too until their batched loops took forms without early returns: every lane forms both
-//! directions, the configuration and the value, and an unusable lane discards them (the same
-//! numbers). With its `f64` half vector (for refraction `wo + η' wi` cancels), the branches had
-//! tipped the balance. AVX-512 vectorised all of them before the table passes; the passes are not
-//! measured there.
+//! lane code branching between sides). The energy-compensated microfacet model's loops and both
+//! plastics' stayed scalar too until they looked their tables up in passes of their own (above),
+//! and their `sample` evaluated the drawn lobe without early returns and finished its lanes without
+//! a branch: `cargo bench -p lobe-peers`, old and new builds interleaved over three rounds, 4,096
+//! lanes, the batched calls went to 0.20× (`eval`), 0.23× (`pdf`) and 0.21× (`sample`) of the old
+//! for the compensated gold conductor, 0.19×, 0.64× and 0.30× for the plastic (whose `pdf` loop was
+//! already vectorised) and 0.25×, 0.20× and 0.30× for the compensated plastic (a probe, five
+//! rounds, had the compensated Schlick conductor's at 0.64×, 0.33× and 0.43×). The rough
+//! dielectric's `eval` and `sample` stayed scalar there too until their batched loops took forms
+//! without early returns: every lane forms both directions, the configuration and the value, and an
+//! unusable lane discards them (the same numbers). With its `f64` half vector (for refraction `wo +
+//! η' wi` cancels), the branches had tipped the balance. AVX-512 vectorised all of them before the
+//! table passes; the passes are not measured there.
 //!
 //! **Batch size.** Keep a batch within the L2 cache: an RGB `eval`'s slices take 36 bytes per
 //! lane, so 2¹⁵ lanes are 1.1 MiB (the machine measured here has a 2 MiB L2). The outputs are
