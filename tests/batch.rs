@@ -596,6 +596,11 @@ fn the_compensated_models_equal_the_scalar_path() {
         &Plastic::compensated(Vec3::new(0.8, 0.5, 0.2), Ggx::isotropic(a(0.4)), glass).unwrap(),
     );
     assert_both_lobes("plastic compensated", &lobes);
+    // A black base: the plastic always picks its coat (p = 1), so its diffuse samples all
+    // come from the coat's compensation lobe, a branch of the batched lane of its own.
+    let black = Plastic::compensated(Vec3::ZERO, Ggx::isotropic(a(0.4)), glass).unwrap();
+    let lobes = check("plastic compensated, black base", &black);
+    assert_both_lobes("plastic compensated, black base", &lobes);
 }
 
 /// The loops that read a table run 256 lanes at a time (the tables looked up in passes of

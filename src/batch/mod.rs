@@ -65,8 +65,8 @@
 //! albedo and the coat's own); then the model's arithmetic runs in a loop that reads no
 //! table; `sample` then looks the tables up at the sampled directions and adds what needs
 //! them (the compensation lobe's value, the plastic's diffuse term) in a last pass. The chunk's
-//! buffers are on the stack (up to 11 KiB for a `Vec4` model's `sample`, zeroed on each call: a
-//! batch of a few lanes pays for that, one of 256 or more does not notice it). A microfacet
+//! buffers are on the stack (up to 14 KiB, for a `Vec4` compensated plastic's `sample`; zeroed
+//! on each call: a batch of a few lanes pays for that, one of 256 or more does not notice it). A microfacet
 //! model's loops, and the energy-compensated microfacet
 //! model's, take the Fresnel term channel by channel
 //! ([`Fresnel::eval_per_channel`](crate::fresnel::Fresnel::eval_per_channel)): the exact

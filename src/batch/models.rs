@@ -1,7 +1,6 @@
 //! Every model's [`Batch`] implementation.
 
 use super::Batch;
-use crate::bxdf::CoatCalls;
 use crate::bxdf::{
     BlinnPhong, CompensatedDielectric, CompensatedMicrofacet, DisneyDiffuse,
     EnergyPreservingOrenNayar, Glazed, Lambert, Microfacet, Mirror, Mono, OrenNayar, Phong,
@@ -280,61 +279,10 @@ where
 }
 batch_by_masking!(impl<D: NormalDistribution + Clone> for CompensatedDielectric<D> where f32);
 
-/// A plastic's coat calls with the coat's masking term fixed (height-correlated): read per
-/// lane, the term kept the plastic's loops from vectorising (as for the microfacet models;
-/// under AVX2 the table reads do too: see the `lobe::batch` docs).
+/// A plastic's lanes with the coat's masking term fixed (height-correlated): read per lane,
+/// the term kept the plastic's loops from vectorising (as for the microfacet models; under
+/// AVX2 the table reads do too: see the `lobe::batch` docs).
 struct HeightCorrelatedCoat;
-
-/// [`CoatCalls`] with height-correlated masking for the coat `$coat` (prepared state
-/// `$state`), whose batched sample is `$sample` (the compensated coat's draws from both of
-/// its lobes in every lane: the same numbers).
-macro_rules! height_correlated_coat {
-    ($coat:ty, $state:ty, $sample:ident::<$lanes:tt>) => {
-        impl<D: NormalDistribution> CoatCalls<$coat> for HeightCorrelatedCoat {
-            #[inline(always)]
-            fn eval(coat: &$coat, at: &$state, wi: Vec3) -> f32 {
-                coat.eval_with::<false>(at, wi, Masking::HeightCorrelated)
-            }
-
-            #[inline(always)]
-            fn eval_pdf(coat: &$coat, at: &$state, wi: Vec3) -> (f32, f32) {
-                coat.eval_pdf_with::<false>(at, wi, Masking::HeightCorrelated)
-            }
-
-            #[inline(always)]
-            fn sample(coat: &$coat, at: &$state, u: Vec2, uc: f32) -> Option<BxdfSample<f32>> {
-                coat.$sample::<$lanes>(at, u, uc, Masking::HeightCorrelated)
-            }
-        }
-    };
-}
-
-height_correlated_coat!(Microfacet<D, Dielectric>, At<View>, sample_with::<false>);
-height_correlated_coat!(
-    CompensatedMicrofacet<D, Dielectric>,
-    CompensatedState<At<View>, f32>,
-    sample_with::<true>
-);
-
-impl<D, S: Spectrum, C: Prepare<Spectrum = f32>> LaneOp<Plastic<D, S, C>> for HeightCorrelatedCoat
-where
-    HeightCorrelatedCoat: CoatCalls<C>,
-{
-    #[inline(always)]
-    fn eval(m: &Plastic<D, S, C>, wo: Vec3, wi: Vec3) -> S {
-        m.eval_with::<Self>(&m.prepare(wo), wi)
-    }
-
-    #[inline(always)]
-    fn pdf(m: &Plastic<D, S, C>, wo: Vec3, wi: Vec3) -> f32 {
-        m.pdf_prepared(&m.prepare(wo), wi)
-    }
-
-    #[inline(always)]
-    fn sample(m: &Plastic<D, S, C>, wo: Vec3, u: Vec2, uc: f32) -> Option<BxdfSample<S>> {
-        m.sample_with::<Self>(&m.prepare(wo), u, uc)
-    }
-}
 
 /// Whether a plastic's coat is the one its batched loops fix: height-correlated masking and,
 /// for the compensated coat, Kulla & Conty's compensation. The constructors build no other; a
@@ -435,7 +383,10 @@ impl<D: NormalDistribution, S: Spectrum> TableOp<Plastic<D, S, Microfacet<D, Die
         wi: Vec3,
         e_wi: f32,
     ) -> S {
-        let coat_f = <Self as CoatCalls<_>>::eval(m.coat(), Plastic::<D, S>::coat_state(at), wi);
+        let coat_at = Plastic::<D, S>::coat_state(at);
+        let coat_f = m
+            .coat()
+            .eval_with::<false>(coat_at, wi, Masking::HeightCorrelated);
         m.eval_given(at, wi, coat_f, e_wi)
     }
 }
@@ -514,7 +465,7 @@ impl<D: NormalDistribution, S: Spectrum> TableSample for CompensatedPlastic<D, S
 
     #[inline(always)]
     fn outgoing(at: &Self::Prepared) -> (f32, f32) {
-        Self::outgoing(at)
+        CompensatedPlastic::<D, S>::finishing_state(at)
     }
 
     #[inline(always)]

@@ -10,9 +10,10 @@
 //! the figures). The numbers are those of the scalar path: the same lookups, the same
 //! arithmetic, in another order of passes.
 //!
-//! The chunk's buffers live on the stack: up to 11 KiB for a `Vec4` model's `sample` (5 KiB
-//! for `f32`), zeroed on every call; a batch of a few lanes pays for that, one of 256 or
-//! more does not notice it.
+//! The chunk's buffers live on the stack: up to 14 KiB for a `Vec4` compensated plastic's
+//! `sample` (two tables' values per lane, and its lookups' temporaries), 11 KiB for a `Vec4`
+//! compensated conductor's, 5 KiB for an `f32` one's; zeroed on every call, so a batch of a
+//! few lanes pays for that, one of 256 or more does not notice it.
 
 use super::kernel::{EvalKernel, Kernel, PdfKernel, SampleKernel, cut};
 use super::lanes::{Lanes, Vec2s, Vec3sMut};

@@ -325,22 +325,6 @@ impl<D: NormalDistribution, F: FresnelAverage> CompensatedMicrofacet<D, F> {
         }
     }
 
-    /// [`Prepare::sample_prepared`] under `masking`. `LANES` is the form for a batched loop:
-    /// every lane draws both lobes' directions and keeps the one its `uc` picks, so that the
-    /// loop has no branch between lobes and vectorises, and the Fresnel term is taken channel
-    /// by channel. The same numbers as the scalar form: the single-scattering lobe's `sample`
-    /// is its `eval_pdf` at the direction it draws, refused where that density is unusable.
-    #[inline(always)]
-    pub(crate) fn sample_with<const LANES: bool>(
-        &self,
-        at: &CompensatedState<At<View>, F::Spectrum>,
-        u: Vec2,
-        uc: f32,
-        masking: Masking,
-    ) -> Option<BxdfSample<F::Spectrum>> {
-        self.sample_compensated::<LANES, true>(at, u, uc, masking, self.compensation)
-    }
-
     /// Kulla & Conty's value for `wo`, `wi` above the surface: the single-scattering value
     /// `f` plus the compensation lobe's, `outgoing · (1 − E(μi))`, from the factor `outgoing`
     /// at `wo` and `E(μi)` at `wi` (for `eval`, and for a sample that
@@ -383,15 +367,23 @@ impl<D: NormalDistribution, F: FresnelAverage> CompensatedMicrofacet<D, F> {
         (wi, f, pdf)
     }
 
-    /// [`sample_with`](Self::sample_with), finished where `FINISH`. Unfinished, under Kulla &
-    /// Conty's compensation the sample's `f` is the single-scattering lobe's value alone, to
-    /// [`finish`](Self::finish) with the table's `E(μi)` at the sampled direction, which a
-    /// batched loop looks up for a chunk of lanes in between; under Turquin's scaling the
-    /// sample is complete either way. (The scalar path finishes here, in the tail: finished
-    /// by its caller instead, the scalar `sample` took 8–10% longer.) `compensation` is the
-    /// model's, a parameter so that a batched loop can fix it outside the loop, as `masking`:
-    /// with the branch between the two in the loop, LLVM weighs both samplers in every lane,
-    /// and leaves the loop scalar for a costly Fresnel term (the exact conductor's).
+    /// [`Prepare::sample_prepared`] under `masking` and `compensation` (the model's: a
+    /// parameter so that a batched loop can fix it outside the loop, as `masking`; with the
+    /// branch between the two in the loop, LLVM weighs both samplers in every lane, and
+    /// leaves the loop scalar for a costly Fresnel term, the exact conductor's).
+    ///
+    /// `LANES` is the form for a batched loop: every lane draws both lobes' directions and
+    /// keeps the one its `uc` picks ([`draw_lane`](Self::draw_lane)), so that the loop has no
+    /// branch between lobes and vectorises, and the Fresnel term is taken channel by channel.
+    /// The same numbers as the scalar form: the single-scattering lobe's `sample` is its
+    /// `eval_pdf` at the direction it draws, refused where that density is unusable.
+    ///
+    /// Unless `FINISH`, under Kulla & Conty's compensation the sample's `f` is the
+    /// single-scattering lobe's value alone, to [`finish`](Self::finish) with the table's
+    /// `E(μi)` at the sampled direction, which a batched loop looks up for a chunk of lanes in
+    /// between; under Turquin's scaling the sample is complete either way. (The scalar path
+    /// finishes here, in the tail: finished by its caller instead, the scalar `sample` took
+    /// 8–10% longer.)
     #[inline(always)]
     pub(crate) fn sample_compensated<const LANES: bool, const FINISH: bool>(
         &self,
@@ -482,7 +474,8 @@ impl<D: NormalDistribution, F: FresnelAverage> Prepare for CompensatedMicrofacet
         u: Vec2,
         uc: f32,
     ) -> Option<BxdfSample<F::Spectrum>> {
-        self.sample_with::<false>(at, u, uc, self.inner.masking())
+        let (masking, compensation) = (self.inner.masking(), self.compensation);
+        self.sample_compensated::<false, true>(at, u, uc, masking, compensation)
     }
 
     #[inline(always)]

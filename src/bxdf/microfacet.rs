@@ -175,7 +175,8 @@ impl<D: NormalDistribution, F: Fresnel> Microfacet<D, F> {
     /// an unusable pair (not both above the surface, or `wo + wi = 0`) is evaluated at the
     /// stand-in `s = z` and answered with zeros at the end. The same numbers: it repeats
     /// `half_above` and `eval_pdf_with` step for step (change them together), and
-    /// `tests/batch.rs` compares the compensated models' batched samples with the scalar ones.
+    /// `tests/batch.rs` compares the batched samples that use it (the compensated models', the
+    /// plastics') with the scalar ones.
     #[inline(always)]
     pub(crate) fn eval_pdf_lane<const PER_CHANNEL: bool>(
         &self,
@@ -218,9 +219,9 @@ impl<D: NormalDistribution, F: Fresnel> Microfacet<D, F> {
         if !(at.wo.z > 0.0) {
             return None;
         }
-        // `CompensatedMicrofacet`'s batched form relies on this: the sample is `eval_pdf_with`
-        // at `sample_direction` (which `eval_pdf_lane` repeats without early returns),
-        // refused exactly where that density is unusable.
+        // The batched forms of `CompensatedMicrofacet`'s and the plastics' samples rely on
+        // this: the sample is `eval_pdf_with` at `sample_direction` (which `eval_pdf_lane`
+        // repeats without early returns), refused exactly where that density is unusable.
         let wi = self.sample_direction(at, u);
         // Evaluate at wo + wi, as `eval` and `pdf` do, rather than at `m`: the two differ by
         // rounding, and a renderer's MIS needs `pdf` to reproduce the sample's density

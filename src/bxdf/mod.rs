@@ -230,7 +230,6 @@ pub use mix::Mix;
 pub use mono::Mono;
 pub use oren_nayar::OrenNayar;
 pub use phong::Phong;
-pub(crate) use plastic::CoatCalls;
 pub use plastic::{CompensatedPlastic, Plastic, PlasticState};
 pub use rough_dielectric::RoughDielectric;
 pub use sheen::Sheen;

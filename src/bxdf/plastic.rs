@@ -258,38 +258,6 @@ fn coat_directional_albedo<D: NormalDistribution>(
     sum / (STRATA * STRATA) as f32
 }
 
-/// How a plastic calls its coat: its own [`Prepare`] calls ([`OwnCalls`]), or, in a batched
-/// loop, the same calls with the coat's masking term fixed outside the loop (which then does
-/// not branch on it per lane).
-pub(crate) trait CoatCalls<C: Prepare<Spectrum = f32>> {
-    /// The coat's `eval_prepared`.
-    fn eval(coat: &C, at: &C::Prepared, wi: Vec3) -> f32;
-    /// The coat's `eval_pdf_prepared`.
-    fn eval_pdf(coat: &C, at: &C::Prepared, wi: Vec3) -> (f32, f32);
-    /// The coat's `sample_prepared`.
-    fn sample(coat: &C, at: &C::Prepared, u: Vec2, uc: f32) -> Option<BxdfSample<f32>>;
-}
-
-/// The coat's own [`Prepare`] calls.
-pub(crate) struct OwnCalls;
-
-impl<C: Prepare<Spectrum = f32>> CoatCalls<C> for OwnCalls {
-    #[inline(always)]
-    fn eval(coat: &C, at: &C::Prepared, wi: Vec3) -> f32 {
-        coat.eval_prepared(at, wi)
-    }
-
-    #[inline(always)]
-    fn eval_pdf(coat: &C, at: &C::Prepared, wi: Vec3) -> (f32, f32) {
-        coat.eval_pdf_prepared(at, wi)
-    }
-
-    #[inline(always)]
-    fn sample(coat: &C, at: &C::Prepared, u: Vec2, uc: f32) -> Option<BxdfSample<f32>> {
-        coat.sample_prepared(at, u, uc)
-    }
-}
-
 impl<D, S: Spectrum, C: Prepare<Spectrum = f32>> Plastic<D, S, C> {
     /// The coat.
     #[inline(always)]
@@ -316,17 +284,13 @@ impl<D, S: Spectrum, C: Prepare<Spectrum = f32>> Plastic<D, S, C> {
         }
     }
 
-    /// [`Prepare::eval_prepared`], calling the coat through `O`.
+    /// [`Prepare::eval_prepared`].
     #[inline(always)]
-    pub(crate) fn eval_with<O: CoatCalls<C>>(
-        &self,
-        at: &At<PlasticState<C::Prepared>>,
-        wi: Vec3,
-    ) -> S {
+    fn eval_with(&self, at: &At<PlasticState<C::Prepared>>, wi: Vec3) -> S {
         if !both_above(at.wo, wi) {
             return S::zero();
         }
-        let coat_f = O::eval(&self.coat, &at.state.coat, wi);
+        let coat_f = self.coat.eval_prepared(&at.state.coat, wi);
         self.eval_given(at, wi, coat_f, self.coat_albedo_at(wi.z))
     }
 
@@ -355,33 +319,29 @@ impl<D, S: Spectrum, C: Prepare<Spectrum = f32>> Plastic<D, S, C> {
         &at.state.coat
     }
 
-    /// [`Prepare::eval_pdf_prepared`], calling the coat through `O`.
+    /// [`Prepare::eval_pdf_prepared`].
     #[inline(always)]
-    fn eval_pdf_with<O: CoatCalls<C>>(
-        &self,
-        at: &At<PlasticState<C::Prepared>>,
-        wi: Vec3,
-    ) -> (S, f32) {
+    fn eval_pdf_with(&self, at: &At<PlasticState<C::Prepared>>, wi: Vec3) -> (S, f32) {
         if !both_above(at.wo, wi) {
             return (S::zero(), 0.0);
         }
         let st = &at.state;
-        let (coat_f, coat_pdf) = O::eval_pdf(&self.coat, &st.coat, wi);
+        let (coat_f, coat_pdf) = self.coat.eval_pdf_prepared(&st.coat, wi);
         (
             S::splat(coat_f) + self.diffuse(st.t_o, self.coat_albedo_at(wi.z)),
             st.p_coat * coat_pdf + (1.0 - st.p_coat) * cosine_hemisphere_pdf(wi.z),
         )
     }
 
-    /// [`Prepare::sample_prepared`], calling the coat through `O`.
+    /// [`Prepare::sample_prepared`].
     #[inline(always)]
-    pub(crate) fn sample_with<O: CoatCalls<C>>(
+    fn sample_with(
         &self,
         at: &At<PlasticState<C::Prepared>>,
         u: Vec2,
         uc: f32,
     ) -> Option<BxdfSample<S>> {
-        let s = self.sample_unfinished::<O>(at, u, uc)?;
+        let s = self.sample_unfinished(at, u, uc)?;
         let e_wi = self.coat_albedo_at(s.wi.z);
         Some(BxdfSample {
             f: self.finish(s.f, at.state.t_o, e_wi),
@@ -391,10 +351,11 @@ impl<D, S: Spectrum, C: Prepare<Spectrum = f32>> Plastic<D, S, C> {
 
     /// [`sample_with`](Self::sample_with) but for the diffuse term, which needs the coat's
     /// albedo at the sampled direction: the sample's `f` is the coat's value alone, to
-    /// [`finish`](Self::finish) (a batched loop looks the albedo up for a chunk of lanes in
-    /// between).
+    /// [`finish`](Self::finish). Its batched form is [`sample_lane`](Self::sample_lane)
+    /// (whose samples a batched loop finishes after looking the albedo up for a chunk of
+    /// lanes).
     #[inline(always)]
-    fn sample_unfinished<O: CoatCalls<C>>(
+    fn sample_unfinished(
         &self,
         at: &At<PlasticState<C::Prepared>>,
         u: Vec2,
@@ -409,11 +370,13 @@ impl<D, S: Spectrum, C: Prepare<Spectrum = f32>> Plastic<D, S, C> {
         let (wi, coat_f, coat_pdf, lobe) = if crate::sampling::picks(uc, st.p_coat) {
             // The coat's own lobe choice (a compensated coat has two, its multiple-scattering
             // lobe diffuse), from what is left of uc, and the coat's label for it.
-            let s = O::sample(&self.coat, &st.coat, u, reuse_uniform(uc, 0.0, st.p_coat))?;
+            let s = self
+                .coat
+                .sample_prepared(&st.coat, u, reuse_uniform(uc, 0.0, st.p_coat))?;
             (s.wi, s.f, s.pdf, s.lobe)
         } else {
             let wi = cosine_hemisphere(u);
-            let (f, pdf) = O::eval_pdf(&self.coat, &st.coat, wi);
+            let (f, pdf) = self.coat.eval_pdf_prepared(&st.coat, wi);
             (wi, f, pdf, Lobes::DIFFUSE_REFLECTION)
         };
         self.drawn(st, wi, coat_f, coat_pdf, lobe)
@@ -463,8 +426,9 @@ pub(crate) trait LaneCoat: Prepare<Spectrum = f32> {
     /// For a lane that picked the coat's lobe (`coat`) or the plastic's diffuse lobe (the
     /// cosine-weighted direction for `u`): the direction, the coat's value (unfinished, for a
     /// coat that reads a table at it) and density there, and whether the coat's glossy lobe
-    /// drew it; `None` where the coat's own sample refuses it. `uc` is what is left of the
-    /// plastic's random number for the coat's own choice of lobe.
+    /// drew it; `None` where the coat's own sample refuses it (and, for the compensated coat,
+    /// any direction below the surface, which the plastic refuses anyway). `uc` is what is
+    /// left of the plastic's random number for the coat's own choice of lobe.
     fn draw_lane(
         &self,
         at: &Self::Prepared,
@@ -515,12 +479,12 @@ impl<D: NormalDistribution> LaneCoat for CompensatedMicrofacet<D, Dielectric> {
         coat: bool,
         masking: Masking,
     ) -> Option<(Vec3, f32, f32, bool)> {
-        let specular = coat & !crate::sampling::picks(uc, at.probability);
-        let (wi, f, pdf) = self.draw_lane(at, u, !specular, masking);
+        let glossy = coat & !crate::sampling::picks(uc, at.probability);
+        let (wi, f, pdf) = self.draw_lane(at, u, !glossy, masking);
         // The coat's own sample refuses its reflected direction where the single-scattering
         // density is unusable, and any direction where its mixture's is; the plastic's diffuse
         // lobe takes the coat's value and density as they are (the plastic's mixture decides).
-        if specular && !usable_pdf(pdf) {
+        if glossy && !usable_pdf(pdf) {
             return None;
         }
         if !(wi.z > 0.0) {
@@ -530,7 +494,7 @@ impl<D: NormalDistribution> LaneCoat for CompensatedMicrofacet<D, Dielectric> {
         if coat && !usable_pdf(pdf) {
             return None;
         }
-        Some((wi, f, pdf, specular))
+        Some((wi, f, pdf, glossy))
     }
 }
 
@@ -565,7 +529,9 @@ impl<D: NormalDistribution, S: Spectrum> CompensatedPlastic<D, S> {
     /// What [`finish_compensated`](Self::finish_compensated) needs of the prepared state:
     /// the coat's transmittance and its compensation factor at `wo`.
     #[inline(always)]
-    pub(crate) fn outgoing(at: &At<PlasticState<CompensatedState<At<View>, f32>>>) -> (f32, f32) {
+    pub(crate) fn finishing_state(
+        at: &At<PlasticState<CompensatedState<At<View>, f32>>>,
+    ) -> (f32, f32) {
         (at.state.t_o, at.state.coat.outgoing)
     }
 
@@ -598,7 +564,7 @@ impl<D, S: Spectrum, C: Prepare<Spectrum = f32>> Prepare for Plastic<D, S, C> {
 
     #[inline(always)]
     fn eval_prepared(&self, at: &Self::Prepared, wi: Vec3) -> S {
-        self.eval_with::<OwnCalls>(at, wi)
+        self.eval_with(at, wi)
     }
 
     #[inline(always)]
@@ -613,12 +579,12 @@ impl<D, S: Spectrum, C: Prepare<Spectrum = f32>> Prepare for Plastic<D, S, C> {
 
     #[inline(always)]
     fn eval_pdf_prepared(&self, at: &Self::Prepared, wi: Vec3) -> (S, f32) {
-        self.eval_pdf_with::<OwnCalls>(at, wi)
+        self.eval_pdf_with(at, wi)
     }
 
     #[inline(always)]
     fn sample_prepared(&self, at: &Self::Prepared, u: Vec2, uc: f32) -> Option<BxdfSample<S>> {
-        self.sample_with::<OwnCalls>(at, u, uc)
+        self.sample_with(at, u, uc)
     }
 
     #[inline]
