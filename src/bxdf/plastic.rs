@@ -319,6 +319,14 @@ impl<D, S: Spectrum, C: Prepare<Spectrum = f32>> Plastic<D, S, C> {
         &at.state.coat
     }
 
+    /// The plastic's density for `wo`, `wi` above the surface: the coat's density `coat_pdf`
+    /// and the cosine-weighted one at `cos θi = cos_i`, mixed by the probability of sampling
+    /// the coat.
+    #[inline(always)]
+    fn mixture_pdf(st: &PlasticState<C::Prepared>, coat_pdf: f32, cos_i: f32) -> f32 {
+        st.p_coat * coat_pdf + (1.0 - st.p_coat) * cosine_hemisphere_pdf(cos_i)
+    }
+
     /// [`Prepare::eval_pdf_prepared`].
     #[inline(always)]
     fn eval_pdf_with(&self, at: &At<PlasticState<C::Prepared>>, wi: Vec3) -> (S, f32) {
@@ -329,7 +337,7 @@ impl<D, S: Spectrum, C: Prepare<Spectrum = f32>> Plastic<D, S, C> {
         let (coat_f, coat_pdf) = self.coat.eval_pdf_prepared(&st.coat, wi);
         (
             S::splat(coat_f) + self.diffuse(st.t_o, self.coat_albedo_at(wi.z)),
-            st.p_coat * coat_pdf + (1.0 - st.p_coat) * cosine_hemisphere_pdf(wi.z),
+            Self::mixture_pdf(st, coat_pdf, wi.z),
         )
     }
 
@@ -397,7 +405,7 @@ impl<D, S: Spectrum, C: Prepare<Spectrum = f32>> Plastic<D, S, C> {
         if !(wi.z > 0.0) {
             return None;
         }
-        let pdf = st.p_coat * coat_pdf + (1.0 - st.p_coat) * cosine_hemisphere_pdf(wi.z);
+        let pdf = Self::mixture_pdf(st, coat_pdf, wi.z);
         if !usable_pdf(pdf) {
             return None;
         }
@@ -573,8 +581,7 @@ impl<D, S: Spectrum, C: Prepare<Spectrum = f32>> Prepare for Plastic<D, S, C> {
             return 0.0;
         }
         let st = &at.state;
-        st.p_coat * self.coat.pdf_prepared(&st.coat, wi)
-            + (1.0 - st.p_coat) * cosine_hemisphere_pdf(wi.z)
+        Self::mixture_pdf(st, self.coat.pdf_prepared(&st.coat, wi), wi.z)
     }
 
     #[inline(always)]
