@@ -317,7 +317,16 @@ where
 /// Asserts that the scalar samples `check` compared came from both the diffuse and the glossy
 /// reflection lobe: a two-lobe model's batched loop was compared on both of its branches.
 fn assert_both_lobes(name: &str, lobes: &[Lobes]) {
-    for lobe in [Lobes::DIFFUSE_REFLECTION, Lobes::GLOSSY_REFLECTION] {
+    assert_sampled(
+        name,
+        lobes,
+        &[Lobes::DIFFUSE_REFLECTION, Lobes::GLOSSY_REFLECTION],
+    );
+}
+
+/// Asserts that the scalar samples `check` compared came from each of the lobes `wanted`.
+fn assert_sampled(name: &str, lobes: &[Lobes], wanted: &[Lobes]) {
+    for &lobe in wanted {
         assert!(
             lobes.contains(&lobe),
             "{name}: no lane sampled {lobe:?} ({lobes:?})"
@@ -580,10 +589,25 @@ fn the_compensated_models_equal_the_scalar_path() {
     let glass_row = Ggx::isotropic(a(0.4)).dielectric_albedo(glass).unwrap();
     for mode in [TransportMode::Radiance, TransportMode::Importance] {
         let interface = RoughDielectric::new(Ggx::isotropic(a(0.4)), glass).with_mode(mode);
-        check(
-            &format!("rough glass compensated, {mode:?}"),
-            &interface.with_energy_compensation().unwrap(),
-        );
+        // Its batched sample draws from the compensation lobes and the interface in every
+        // lane and keeps one: compared on lanes of each of the four lobes.
+        let name = format!("rough glass compensated, {mode:?}");
+        let lobes = check(&name, &interface.with_energy_compensation().unwrap());
+        let wanted = [
+            Lobes::DIFFUSE_REFLECTION,
+            Lobes::DIFFUSE | Lobes::TRANSMISSION,
+            Lobes::GLOSSY_REFLECTION,
+            Lobes::GLOSSY_TRANSMISSION,
+        ];
+        assert_sampled(&name, &lobes, &wanted);
+        // An index-matched interface (`η = 1`, whose sample is the delta of `−wo`) with
+        // another's tables, so that the compensation lobes are drawn too: the lanes select
+        // that sample rather than branch on it.
+        let matched = RoughDielectric::new(Ggx::isotropic(a(0.4)), Eta::new(1.0).unwrap());
+        let name = format!("index-matched interface compensated, {mode:?}");
+        let m = CompensatedDielectric::with_albedo(matched.with_mode(mode), glass_row);
+        let wanted = [Lobes::DIFFUSE_REFLECTION, Lobes::SPECULAR_TRANSMISSION];
+        assert_sampled(&name, &check(&name, &m), &wanted);
         for masking in [Masking::Separable, Masking::VCavity] {
             check(
                 &format!("rough glass compensated, {mode:?}, {masking:?}"),
@@ -604,8 +628,8 @@ fn the_compensated_models_equal_the_scalar_path() {
 }
 
 /// The loops that read a table run 256 lanes at a time (the tables looked up in passes of
-/// their own: the energy-compensated microfacet model's, for both compensations, and both
-/// plastics'): batches of no lane, of one, and ending just before, at and just after a
+/// their own: the energy-compensated microfacet model's, for both compensations, both
+/// plastics' and the compensated glass's): batches of no lane, of one, and ending just before, at and just after a
 /// chunk's end, equal the scalar calls lane by lane, bit for bit. (The other tests' batches
 /// have 4,099 lanes: sixteen whole chunks and three lanes.)
 #[test]
@@ -626,27 +650,33 @@ fn the_chunked_loops_equal_the_scalar_path_at_every_chunk_boundary() {
     at_every_chunk_boundary("plastic", &plastic.unwrap());
     let compensated = Plastic::compensated(Vec3::new(0.8, 0.5, 0.2), Ggx::isotropic(a(0.4)), glass);
     at_every_chunk_boundary("compensated plastic", &compensated.unwrap());
+    let interface = RoughDielectric::new(Ggx::isotropic(a(0.4)), glass);
+    let compensated = interface.with_energy_compensation().unwrap();
+    at_every_chunk_boundary("compensated glass", &compensated);
 }
 
-/// [`the_chunked_loops_equal_the_scalar_path_at_every_chunk_boundary`] for one RGB model.
+/// [`the_chunked_loops_equal_the_scalar_path_at_every_chunk_boundary`] for one model.
 fn at_every_chunk_boundary<M>(model: &str, m: &M)
 where
-    M: Batch + Bxdf<Spectrum = Vec3> + lobe::bxdf::Prepare<Spectrum = Vec3>,
+    M: Batch + Bxdf<Spectrum = <M as lobe::bxdf::Prepare>::Spectrum>,
+    <M as lobe::bxdf::Prepare>::Spectrum: Buffers,
 {
+    type S<M> = <M as lobe::bxdf::Prepare>::Spectrum;
     let i = inputs();
     for n in [0, 1, 255, 256, 257, 511, 512, 513] {
         let name = format!("{model}, {n} lanes");
         let (wo, wi) = (Soa::of(&i.wo[..n]), Soa::of(&i.wi[..n]));
         let (ux, uy): (Vec<f32>, Vec<f32>) = i.u[..n].iter().map(|u| (u.x, u.y)).unzip();
-        let mut f = Soa::zeros(n);
-        m.eval_batch(wo.view(), wi.view(), f.view_mut()).unwrap();
+        let mut f = S::<M>::store(n);
+        m.eval_batch(wo.view(), wi.view(), S::<M>::lanes_mut(&mut f))
+            .unwrap();
         let mut pdf = vec![0.0; n];
         m.pdf_batch(wo.view(), wi.view(), &mut pdf).unwrap();
-        let (mut swi, mut sf, mut spdf) = (Soa::zeros(n), Soa::zeros(n), vec![0.0; n]);
+        let (mut swi, mut sf, mut spdf) = (Soa::zeros(n), S::<M>::store(n), vec![0.0; n]);
         let (mut slobe, mut seta) = (vec![Lobes::SPECULAR_TRANSMISSION; n], vec![-1.0; n]);
         let out = SampleOut {
             wi: swi.view_mut(),
-            f: sf.view_mut(),
+            f: S::<M>::lanes_mut(&mut sf),
             pdf: &mut spdf,
             lobe: &mut slobe,
             eta: &mut seta,
@@ -655,7 +685,8 @@ where
             .unwrap();
         for k in 0..n {
             let (o, w) = (i.wo[k], i.wi[k]);
-            assert!(same(f.get(k), m.eval(o, w)), "{name}: eval, lane {k}");
+            let f = S::<M>::read(&f, k);
+            assert!(same(f, m.eval(o, w)), "{name}: eval, lane {k}");
             assert_eq!(
                 pdf[k].to_bits(),
                 m.pdf(o, w).to_bits(),
@@ -663,10 +694,11 @@ where
             );
             let (w, v, p, l, e) = match m.sample(o, i.u[k], i.uc[k]) {
                 Some(s) => (s.wi, s.f, s.pdf, s.lobe, s.eta),
-                None => (Vec3::ZERO, Vec3::ZERO, 0.0, Lobes::NONE, 0.0),
+                None => (Vec3::ZERO, Spectrum::zero(), 0.0, Lobes::NONE, 0.0),
             };
             assert!(same(swi.get(k), w), "{name}: sampled direction, lane {k}");
-            assert!(same(sf.get(k), v), "{name}: sample's value, lane {k}");
+            let sampled = S::<M>::read(&sf, k);
+            assert!(same(sampled, v), "{name}: sample's value, lane {k}");
             assert_eq!(
                 spdf[k].to_bits(),
                 p.to_bits(),

@@ -89,7 +89,6 @@ macro_rules! masked {
 masked!(impl<D: NormalDistribution, F: Fresnel> for Microfacet<D, F> =>
     eval_with::<true>, sample_with::<true>);
 masked!(impl<D: NormalDistribution> for RoughDielectric<D> => eval_lane, sample_with);
-masked!(impl<D: NormalDistribution> for CompensatedDielectric<D> => eval_with, sample_with);
 
 /// A [`Masked`] model's lanes with the masking term `MASKINGS[K]`.
 struct FixedMasking<const K: usize>;
@@ -118,20 +117,27 @@ impl<const K: usize, M: Masked> LaneOp<M> for FixedMasking<K> {
     }
 }
 
-/// Chooses the loop for the model's masking term.
+/// Chooses the loop for the model's masking term, run by `$run` (`run`, or `chunked` for a
+/// model that reads tables).
 macro_rules! by_masking {
-    ($m:expr, $kernel:ident($($arg:expr),*)) => {
+    ($run:ident, $m:expr, $kernel:ident($($arg:expr),*)) => {
         match $m.masking() {
-            Masking::HeightCorrelated => run($kernel::<_, FixedMasking<0>>($m, $($arg),*)),
-            Masking::Separable => run($kernel::<_, FixedMasking<1>>($m, $($arg),*)),
-            Masking::VCavity => run($kernel::<_, FixedMasking<2>>($m, $($arg),*)),
+            Masking::HeightCorrelated => $run($kernel::<_, FixedMasking<0>>($m, $($arg),*)),
+            Masking::Separable => $run($kernel::<_, FixedMasking<1>>($m, $($arg),*)),
+            Masking::VCavity => $run($kernel::<_, FixedMasking<2>>($m, $($arg),*)),
         }
     };
 }
 
-/// `Batch` for a [`Masked`] model: its `eval` and `sample` loops by masking term.
-macro_rules! batch_by_masking {
-    (impl<$($g:ident: $b:ident $(+ $more:ident)*),*> for $t:ty where $s:ty) => {
+/// `Batch` for a model whose loops fix something outside the loop: `eval` and `sample` chosen
+/// by `$by` (`by_masking`, `by_compensation`, `by_coat`) and run by `$run`, `pdf` run by
+/// `$run` with the lane operation `$pdf` (the density depends on neither). `run` for a model
+/// that reads no table (`$pdf` = `Plain`, as `Batch`'s own `pdf_batch`); `chunked`, a chunk
+/// of lanes at a time (the module `tabulated`; `$pdf` = `()`), for one that reads tables at
+/// each lane's directions.
+macro_rules! batch_by {
+    (impl<$($g:ident: $b:ident $(+ $more:ident)*),*> for $t:ty
+        where $s:ty, $by:ident, $run:ident, $pdf:ty) => {
         impl<$($g: $b $(+ $more)*),*> Batch for $t
         where
             $s: Lanes,
@@ -142,7 +148,16 @@ macro_rules! batch_by_masking {
                 wi: Vec3s<'_>,
                 f: <$s as Lanes>::Mut<'_>,
             ) -> Result<(), LengthError> {
-                by_masking!(self, eval_kernel(wo, wi, f))
+                $by!($run, self, eval_kernel(wo, wi, f))
+            }
+
+            fn pdf_batch(
+                &self,
+                wo: Vec3s<'_>,
+                wi: Vec3s<'_>,
+                pdf: &mut [f32],
+            ) -> Result<(), LengthError> {
+                $run(pdf_kernel::<_, $pdf>(self, wo, wi, pdf))
             }
 
             fn sample_batch(
@@ -152,27 +167,29 @@ macro_rules! batch_by_masking {
                 uc: &[f32],
                 out: SampleOut<'_, $s>,
             ) -> Result<(), LengthError> {
-                by_masking!(self, sample_kernel(wo, u, uc, out))
+                $by!($run, self, sample_kernel(wo, u, uc, out))
             }
         }
     };
 }
 
-batch_by_masking!(impl<D: NormalDistribution + Clone, F: Fresnel> for Microfacet<D, F> where F::Spectrum);
-batch_by_masking!(impl<D: NormalDistribution + Clone> for RoughDielectric<D> where f32);
+batch_by!(impl<D: NormalDistribution + Clone, F: Fresnel>
+    for Microfacet<D, F> where F::Spectrum, by_masking, run, Plain);
+batch_by!(impl<D: NormalDistribution + Clone>
+    for RoughDielectric<D> where f32, by_masking, run, Plain);
 
 /// Chooses a compensated model's loop, run in chunks, for its masking term and compensation.
 macro_rules! by_compensation {
-    ($m:expr, $kernel:ident($($arg:expr),*)) => {{
+    ($run:ident, $m:expr, $kernel:ident($($arg:expr),*)) => {{
         use Compensation::{KullaConty, Turquin};
         use Masking::{HeightCorrelated, Separable, VCavity};
         match ($m.masking(), $m.compensation()) {
-            (HeightCorrelated, KullaConty) => chunked($kernel::<_, Fixed<0, true>>($m, $($arg),*)),
-            (Separable, KullaConty) => chunked($kernel::<_, Fixed<1, true>>($m, $($arg),*)),
-            (VCavity, KullaConty) => chunked($kernel::<_, Fixed<2, true>>($m, $($arg),*)),
-            (HeightCorrelated, Turquin) => chunked($kernel::<_, Fixed<0, false>>($m, $($arg),*)),
-            (Separable, Turquin) => chunked($kernel::<_, Fixed<1, false>>($m, $($arg),*)),
-            (VCavity, Turquin) => chunked($kernel::<_, Fixed<2, false>>($m, $($arg),*)),
+            (HeightCorrelated, KullaConty) => $run($kernel::<_, Fixed<0, true>>($m, $($arg),*)),
+            (Separable, KullaConty) => $run($kernel::<_, Fixed<1, true>>($m, $($arg),*)),
+            (VCavity, KullaConty) => $run($kernel::<_, Fixed<2, true>>($m, $($arg),*)),
+            (HeightCorrelated, Turquin) => $run($kernel::<_, Fixed<0, false>>($m, $($arg),*)),
+            (Separable, Turquin) => $run($kernel::<_, Fixed<1, false>>($m, $($arg),*)),
+            (VCavity, Turquin) => $run($kernel::<_, Fixed<2, false>>($m, $($arg),*)),
         }
     }};
 }
@@ -248,36 +265,77 @@ impl<const K: usize, const KULLA: bool, D: NormalDistribution, F: FresnelAverage
     }
 }
 
-/// The compensated microfacet model's three loops look its albedo table up a chunk of lanes
-/// at a time (the module `tabulated`), with the masking term and the compensation fixed.
-impl<D: NormalDistribution + Clone, F: FresnelAverage> Batch for CompensatedMicrofacet<D, F>
-where
-    F::Spectrum: Lanes,
-{
-    fn eval_batch(
-        &self,
-        wo: Vec3s<'_>,
-        wi: Vec3s<'_>,
-        f: <F::Spectrum as Lanes>::Mut<'_>,
-    ) -> Result<(), LengthError> {
-        by_compensation!(self, eval_kernel(wo, wi, f))
+// The compensated microfacet model's three loops look its albedo table up a chunk of lanes
+// at a time (the module `tabulated`), with the masking term and the compensation fixed.
+batch_by!(impl<D: NormalDistribution + Clone, F: FresnelAverage>
+    for CompensatedMicrofacet<D, F> where F::Spectrum, by_compensation, chunked, ());
+
+/// The compensated glass reads its albedo tables at `wo` and `wi`, each on its direction's
+/// side: its loops look them up a chunk of lanes at a time (both sides' rows, then a select),
+/// with the masking term fixed.
+impl<D: NormalDistribution> TableLanes for CompensatedDielectric<D> {
+    type Looked = (f32, f32);
+
+    #[inline(always)]
+    fn look_up(&self, z: &[f32], e: &mut [(f32, f32); CHUNK]) {
+        self.albedo().e_chunk(z, e);
     }
 
-    fn pdf_batch(&self, wo: Vec3s<'_>, wi: Vec3s<'_>, pdf: &mut [f32]) -> Result<(), LengthError> {
-        chunked(pdf_kernel::<_, ()>(self, wo, wi, pdf))
+    #[inline(always)]
+    fn prepare_from(&self, wo: Vec3, (e_wo, _): (f32, f32)) -> Self::Prepared {
+        self.prepare_given(wo, || e_wo)
     }
 
-    fn sample_batch(
-        &self,
-        wo: Vec3s<'_>,
-        u: Vec2s<'_>,
-        uc: &[f32],
-        out: SampleOut<'_, F::Spectrum>,
-    ) -> Result<(), LengthError> {
-        by_compensation!(self, sample_kernel(wo, u, uc, out))
+    #[inline(always)]
+    fn pdf_lane(&self, at: &Self::Prepared, wi: Vec3) -> f32 {
+        CompensatedDielectric::pdf_lane(self, at, wi)
     }
 }
-batch_by_masking!(impl<D: NormalDistribution + Clone> for CompensatedDielectric<D> where f32);
+
+impl<D: NormalDistribution> TableSample for CompensatedDielectric<D> {
+    type Outgoing = (f32, f32);
+
+    #[inline(always)]
+    fn outgoing(at: &Self::Prepared) -> (f32, f32) {
+        (at.outgoing, at.inner.wo.z)
+    }
+
+    #[inline(always)]
+    fn finish(&self, f: f32, outgoing: (f32, f32), e_wi: (f32, f32)) -> f32 {
+        CompensatedDielectric::finish(self, f, outgoing, e_wi)
+    }
+}
+
+impl<const K: usize, D: NormalDistribution> TableOp<CompensatedDielectric<D>> for FixedMasking<K> {
+    #[inline(always)]
+    fn eval(
+        m: &CompensatedDielectric<D>,
+        at: &CompensatedState<At<View>, f32>,
+        wi: Vec3,
+        (e_wi, _): (f32, f32),
+    ) -> f32 {
+        m.eval_lane(at, wi, e_wi, MASKINGS[K])
+    }
+}
+
+impl<const K: usize, D: NormalDistribution> TableSampleOp<CompensatedDielectric<D>>
+    for FixedMasking<K>
+{
+    const UNFINISHED: bool = true;
+
+    #[inline(always)]
+    fn sample(
+        m: &CompensatedDielectric<D>,
+        at: &CompensatedState<At<View>, f32>,
+        u: Vec2,
+        uc: f32,
+    ) -> Option<BxdfSample<f32>> {
+        m.sample_unfinished::<true>(at, u, uc, MASKINGS[K])
+    }
+}
+
+batch_by!(impl<D: NormalDistribution + Clone>
+    for CompensatedDielectric<D> where f32, by_masking, chunked, ());
 
 /// A plastic's lanes with the coat's masking term fixed (height-correlated): read per lane,
 /// the term kept the plastic's loops from vectorising (as for the microfacet models; under
@@ -307,55 +365,23 @@ impl<D: NormalDistribution> FixedCoat for CompensatedMicrofacet<D, Dielectric> {
     }
 }
 
-/// `Batch` for a plastic with the coat `$coat`: its loops run a chunk of lanes at a time
-/// (`chunked`), `eval` and `sample` with the coat fixed ([`FixedCoat`]; the density does not
-/// depend on the masking term).
-macro_rules! batch_plastic {
-    ($coat:ty) => {
-        impl<D: NormalDistribution + Clone, S: Spectrum + Lanes> Batch for Plastic<D, S, $coat> {
-            fn eval_batch(
-                &self,
-                wo: Vec3s<'_>,
-                wi: Vec3s<'_>,
-                f: S::Mut<'_>,
-            ) -> Result<(), LengthError> {
-                if self.coat().fixed() {
-                    chunked(eval_kernel::<_, HeightCorrelatedCoat>(self, wo, wi, f))
-                } else {
-                    run(eval_kernel::<_, Plain>(self, wo, wi, f))
-                }
-            }
-
-            fn pdf_batch(
-                &self,
-                wo: Vec3s<'_>,
-                wi: Vec3s<'_>,
-                pdf: &mut [f32],
-            ) -> Result<(), LengthError> {
-                chunked(pdf_kernel::<_, ()>(self, wo, wi, pdf))
-            }
-
-            fn sample_batch(
-                &self,
-                wo: Vec3s<'_>,
-                u: Vec2s<'_>,
-                uc: &[f32],
-                out: SampleOut<'_, S>,
-            ) -> Result<(), LengthError> {
-                if self.coat().fixed() {
-                    chunked(sample_kernel::<_, HeightCorrelatedCoat>(
-                        self, wo, u, uc, out,
-                    ))
-                } else {
-                    run(sample_kernel::<_, Plain>(self, wo, u, uc, out))
-                }
-            }
+/// Chooses a plastic's loop: with the coat fixed ([`FixedCoat`]), run by `$run`, or the plain
+/// loop for another coat. Its `eval` and `sample` (the density does not depend on the masking
+/// term).
+macro_rules! by_coat {
+    ($run:ident, $m:expr, $kernel:ident($($arg:expr),*)) => {
+        if $m.coat().fixed() {
+            $run($kernel::<_, HeightCorrelatedCoat>($m, $($arg),*))
+        } else {
+            run($kernel::<_, Plain>($m, $($arg),*))
         }
     };
 }
 
-batch_plastic!(Microfacet<D, Dielectric>);
-batch_plastic!(CompensatedMicrofacet<D, Dielectric>);
+batch_by!(impl<D: NormalDistribution + Clone, S: Spectrum + Lanes>
+    for Plastic<D, S, Microfacet<D, Dielectric>> where S, by_coat, chunked, ());
+batch_by!(impl<D: NormalDistribution + Clone, S: Spectrum + Lanes>
+    for Plastic<D, S, CompensatedMicrofacet<D, Dielectric>> where S, by_coat, chunked, ());
 
 /// The plastic with the plain coat reads its own coat-albedo table at `wo` and `wi`: its
 /// `eval` and `sample` loops look it up a chunk of lanes at a time.

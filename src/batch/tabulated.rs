@@ -55,6 +55,12 @@ pub(crate) trait TableLanes: Prepare {
     fn look_up(&self, z: &[f32], e: &mut [Self::Looked; CHUNK]);
     /// [`Prepare::prepare`] with the tables' values at `wo` given as `e_wo`.
     fn prepare_from(&self, wo: Vec3, e_wo: Self::Looked) -> Self::Prepared;
+    /// [`Prepare::pdf_prepared`] as a batched loop's lane computes it (the same numbers;
+    /// a model may give a form without a branch).
+    #[inline(always)]
+    fn pdf_lane(&self, at: &Self::Prepared, wi: Vec3) -> f32 {
+        self.pdf_prepared(at, wi)
+    }
 }
 
 /// A [`TableLanes`] model whose sample, drawn, may be left unfinished for want of the
@@ -141,7 +147,7 @@ impl<M: TableLanes + Clone> Kernel for Chunked<PdfKernel<'_, '_, M, ()>> {
         for (start, end) in chunks(n) {
             m.look_up(&wo.z[start..end], &mut e_wo);
             for (k, &e_wo) in (start..end).zip(&e_wo) {
-                pdf[k] = m.pdf_prepared(&m.prepare_from(wo.get(k), e_wo), wi.get(k));
+                pdf[k] = m.pdf_lane(&m.prepare_from(wo.get(k), e_wo), wi.get(k));
             }
         }
     }

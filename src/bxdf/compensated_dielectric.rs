@@ -6,7 +6,7 @@ use crate::fresnel::{Dielectric, FresnelAverage};
 use crate::microfacet::{Masking, NormalDistribution, View};
 use crate::param::ParamError;
 use crate::sampling::{cosine_hemisphere, reuse_uniform};
-use crate::tables::{AlbedoRow, DielectricAlbedo, TabulatedDielectric};
+use crate::tables::{DielectricAlbedo, TabulatedDielectric};
 use core::f32::consts::PI;
 use glam::{Vec2, Vec3};
 
@@ -219,35 +219,83 @@ impl<D: NormalDistribution> CompensatedDielectric<D> {
         }
     }
 
-    /// `wo`'s side's lobes and the rows `E` of that side and of the other.
+    /// The lobes of the side of a direction whose cosine is `z` (the outside's for `z > 0`),
+    /// field by field: selects of values in a batched loop. (A select of the two sides
+    /// themselves is one of addresses, and the reads from it gathers, which kept LLVM from
+    /// vectorising the loops under AVX2.)
     #[inline(always)]
-    fn side(&self, outside: bool) -> (&Side, &AlbedoRow, &AlbedoRow) {
-        if outside {
-            (&self.outside, &self.albedo.outside, &self.albedo.inside)
-        } else {
-            (&self.inside, &self.albedo.inside, &self.albedo.outside)
+    fn side_of(&self, z: f32) -> Side {
+        let outside = z > 0.0;
+        let pick = |a: f32, b: f32| if outside { a } else { b };
+        let (o, i) = (&self.outside, &self.inside);
+        Side {
+            reflect: pick(o.reflect, i.reflect),
+            transmit: pick(o.transmit, i.transmit),
+            transmitted: pick(o.transmitted, i.transmitted),
         }
     }
 
     /// The compensation lobes' value and their sampling density (given their probability
-    /// `p`) at `wi`, for `wo` with `outgoing = 1 − E(μo)`.
+    /// `p`) at `wi`, for `wo` with `outgoing = 1 − E(μo)`. `E` is read on `wi`'s side:
+    /// reflection stays on `wo`'s, transmission reaches the other.
     #[inline(always)]
     fn lobes_at(&self, wo: Vec3, outgoing: f32, p: f32, wi: Vec3) -> (f32, f32) {
         if wo.z == 0.0 || wi.z == 0.0 {
             return (0.0, 0.0);
         }
-        let (side, same, other) = self.side(wo.z > 0.0);
-        let cos = wi.z.abs();
-        if (wo.z > 0.0) == (wi.z > 0.0) {
-            (
-                outgoing * side.reflect * (1.0 - same.e(cos)),
-                p * (1.0 - side.transmitted) * cos * core::f32::consts::FRAC_1_PI,
-            )
+        let e_wi = self.albedo.row(wi.z).e(wi.z.abs());
+        (
+            self.lobes_value(wo.z, outgoing, wi.z, e_wi),
+            self.lobes_pdf(wo.z, p, wi.z),
+        )
+    }
+
+    /// The compensation lobes' value `outgoing · c · (1 − E(μi))`, `c` of reflection or of
+    /// transmission, given `e_wi = E(μi)` on `wi`'s side; 0 for a direction in the surface.
+    /// `wo_z`, `wi_z`: the directions' cosines. Without a branch (selects), for a batched loop.
+    #[inline(always)]
+    fn lobes_value(&self, wo_z: f32, outgoing: f32, wi_z: f32, e_wi: f32) -> f32 {
+        let side = self.side_of(wo_z);
+        let c = if (wo_z > 0.0) == (wi_z > 0.0) {
+            side.reflect
         } else {
-            (
-                outgoing * side.transmit * (1.0 - other.e(cos)),
-                p * side.transmitted * cos * core::f32::consts::FRAC_1_PI,
-            )
+            side.transmit
+        };
+        let f = outgoing * c * (1.0 - e_wi);
+        if wo_z == 0.0 || wi_z == 0.0 { 0.0 } else { f }
+    }
+
+    /// The compensation lobes' sampling density, given their probability `p`: the cosine
+    /// density on `wi`'s side times the chance of that side; 0 for a direction in the
+    /// surface. Without a branch, as [`lobes_value`](Self::lobes_value).
+    #[inline(always)]
+    fn lobes_pdf(&self, wo_z: f32, p: f32, wi_z: f32) -> f32 {
+        let side = self.side_of(wo_z);
+        let t = if (wo_z > 0.0) == (wi_z > 0.0) {
+            1.0 - side.transmitted
+        } else {
+            side.transmitted
+        };
+        let pdf = p * t * wi_z.abs() * core::f32::consts::FRAC_1_PI;
+        if wo_z == 0.0 || wi_z == 0.0 { 0.0 } else { pdf }
+    }
+
+    /// The compensation lobes' draw for `wo` on the side of `wo_z`, once `uc` has picked them
+    /// (with probability `p`): transmission with the side's share, reflection otherwise, the
+    /// direction cosine-distributed on the chosen side; with its lobe and relative index.
+    #[inline(always)]
+    fn draw_compensation(&self, wo_z: f32, p: f32, u: Vec2, uc: f32) -> (Vec3, Lobes, f32) {
+        let transmit = crate::sampling::picks(uc, p * self.side_of(wo_z).transmitted);
+        let mut wi = cosine_hemisphere(u);
+        // Same side as wo for reflection, the other for transmission.
+        if (wo_z > 0.0) == transmit {
+            wi.z = -wi.z;
+        }
+        if transmit {
+            let eta = self.inner.eta().seen_from(wo_z);
+            (wi, Lobes::DIFFUSE | Lobes::TRANSMISSION, eta)
+        } else {
+            (wi, Lobes::DIFFUSE_REFLECTION, 1.0)
         }
     }
 }
@@ -259,23 +307,13 @@ impl<D: NormalDistribution> CompensatedDielectric<D> {
         self.inner.masking()
     }
 
-    /// [`Prepare::eval_prepared`] under the interface's masking term `masking`.
+    /// The sample of [`sample_prepared`](Prepare::sample_prepared) with the interface's value
+    /// alone in
+    /// place of the sample's value (the mixture's density is the sample's): what
+    /// [`finish`](Self::finish) completes, given `E` at the sampled direction. A batched loop
+    /// (`LANES`) draws with [`draw_lane`](Self::draw_lane), the scalar path one lobe only.
     #[inline(always)]
-    pub(crate) fn eval_with(
-        &self,
-        at: &CompensatedState<At<View>, f32>,
-        wi: Vec3,
-        masking: Masking,
-    ) -> f32 {
-        let f = self.inner.eval_with(&at.inner, wi, masking);
-        f + self
-            .lobes_at(at.inner.wo, at.outgoing, at.probability, wi)
-            .0
-    }
-
-    /// [`Prepare::sample_prepared`] under the interface's masking term `masking`.
-    #[inline(always)]
-    pub(crate) fn sample_with(
+    pub(crate) fn sample_unfinished<const LANES: bool>(
         &self,
         at: &CompensatedState<At<View>, f32>,
         u: Vec2,
@@ -283,45 +321,120 @@ impl<D: NormalDistribution> CompensatedDielectric<D> {
         masking: Masking,
     ) -> Option<BxdfSample<f32>> {
         let wo = at.inner.wo;
-        if wo.z == 0.0 {
-            return None;
-        }
         let p = at.probability;
-        let (wi, f, pdf, lobe, eta) = if crate::sampling::picks(uc, p) {
-            let (side, _, _) = self.side(wo.z > 0.0);
-            let transmit = crate::sampling::picks(uc, p * side.transmitted);
-            let mut wi = cosine_hemisphere(u);
-            // Same side as wo for reflection, the other for transmission.
-            if (wo.z > 0.0) == transmit {
-                wi.z = -wi.z;
-            }
+        let (wi, f, pdf, lobe, eta) = if LANES {
+            self.draw_lane(at, u, uc, masking)
+        } else if crate::sampling::picks(uc, p) {
+            let (wi, lobe, eta) = self.draw_compensation(wo.z, p, u, uc);
             let (f, pdf) = self.inner.eval_pdf_with(&at.inner, wi, masking);
-            let (lobe, eta) = if transmit {
-                (
-                    Lobes::DIFFUSE | Lobes::TRANSMISSION,
-                    self.inner.eta().seen_from(wo.z),
-                )
-            } else {
-                (Lobes::DIFFUSE_REFLECTION, 1.0)
-            };
             (wi, f, pdf, lobe, eta)
         } else {
             let uc = reuse_uniform(uc, p, 1.0 - p);
             let s = self.inner.sample_with(&at.inner, u, uc, masking)?;
             (s.wi, s.f, s.pdf, s.lobe, s.eta)
         };
-        let (f_ms, pdf_ms) = self.lobes_at(wo, at.outgoing, p, wi);
-        let pdf = (1.0 - p) * pdf + pdf_ms;
-        if !usable_pdf(pdf) {
-            return None;
-        }
-        Some(BxdfSample {
+        let pdf = (1.0 - p) * pdf + self.lobes_pdf(wo.z, p, wi.z);
+        let kept = wo.z != 0.0 && lobe != Lobes::NONE && usable_pdf(pdf);
+        kept.then_some(BxdfSample {
             wi,
-            f: f + f_ms,
+            f,
             pdf,
             lobe,
             eta,
         })
+    }
+
+    /// A batched lane's draw, without a branch: the compensation lobes' direction and the
+    /// interface's are both formed, and the one `uc` picks is evaluated, once. The
+    /// interface's value and density there, and the lobe; [`Lobes::NONE`] where the
+    /// interface's own sample would be refused. The same numbers as the scalar draws, for an
+    /// index-matched interface too (its sample, the delta of `−wo`, chosen by a select: a
+    /// branch on it in the loop, though the same for every lane, kept LLVM from vectorising
+    /// the loop under AVX2).
+    #[inline(always)]
+    fn draw_lane(
+        &self,
+        at: &CompensatedState<At<View>, f32>,
+        u: Vec2,
+        uc: f32,
+        masking: Masking,
+    ) -> (Vec3, f32, f32, Lobes, f32) {
+        let (wo, p) = (at.inner.wo, at.probability);
+        let drawn = self.inner.draw(&at.inner, u, reuse_uniform(uc, p, 1.0 - p));
+        let (w_ms, lobe_ms, eta_ms) = self.draw_compensation(wo.z, p, u, uc);
+        let compensate = crate::sampling::picks(uc, p);
+        let matched = self.inner.index_matched();
+        let wi = if compensate { w_ms } else { drawn.wi };
+        let e = self.inner.evaluate(&at.inner, wi, masking);
+        if compensate {
+            // `eval` and `pdf` of the interface: 0 for a pair no microfacet connects.
+            let (f, pdf) = if e.usable { (e.f, e.pdf) } else { (0.0, 0.0) };
+            (wi, f, pdf, lobe_ms, eta_ms)
+        } else if matched {
+            match RoughDielectric::<D>::pass_through(wo) {
+                Some(s) => (s.wi, s.f, s.pdf, s.lobe, s.eta),
+                None => (wi, 0.0, 0.0, Lobes::NONE, 0.0),
+            }
+        } else if drawn.fits(&e) && usable_pdf(e.pdf) {
+            (wi, e.f, e.pdf, e.lobe, e.eta)
+        } else {
+            (wi, 0.0, 0.0, Lobes::NONE, 0.0)
+        }
+    }
+
+    /// [`Prepare::prepare`] with `E(|cos θo|)` of `wo`'s side given by `e_wo` (called only
+    /// where the compensation is on).
+    #[inline(always)]
+    pub(crate) fn prepare_given(
+        &self,
+        wo: Vec3,
+        e_wo: impl FnOnce() -> f32,
+    ) -> CompensatedState<At<View>, f32> {
+        let inner = self.inner.prepare(wo);
+        let side = self.side_of(wo.z);
+        // `|`, not `||`: a branch there kept the batched `pdf` and `sample` loops from
+        // vectorising under AVX2.
+        let off = (wo.z == 0.0) | (side.reflect + side.transmit == 0.0);
+        let outgoing = if off {
+            0.0
+        } else {
+            (1.0 - e_wo()).clamp(0.0, 1.0)
+        };
+        CompensatedState {
+            inner,
+            outgoing,
+            probability: outgoing,
+        }
+    }
+
+    /// [`eval_prepared`](Prepare::eval_prepared) for a batched loop, the same numbers: `e_wi` is
+    /// `E(|cos θi|)` of `wi`'s side, looked up beforehand, and no lane returns early.
+    #[inline(always)]
+    pub(crate) fn eval_lane(
+        &self,
+        at: &CompensatedState<At<View>, f32>,
+        wi: Vec3,
+        e_wi: f32,
+        masking: Masking,
+    ) -> f32 {
+        let f = self.inner.eval_lane(&at.inner, wi, masking);
+        f + self.lobes_value(at.inner.wo.z, at.outgoing, wi.z, e_wi)
+    }
+
+    /// [`Prepare::pdf_prepared`] for a batched loop, the same numbers, without a branch.
+    #[inline(always)]
+    pub(crate) fn pdf_lane(&self, at: &CompensatedState<At<View>, f32>, wi: Vec3) -> f32 {
+        let pdf = self.inner.pdf_lane(&at.inner, wi);
+        (1.0 - at.probability) * pdf + self.lobes_pdf(at.inner.wo.z, at.probability, wi.z)
+    }
+
+    /// A [`sample_unfinished`](Self::sample_unfinished)'s value `f` finished: plus the
+    /// compensation lobes' value, for `wo` with `outgoing = (1 − E(μo), cos θo)`, at the
+    /// sampled direction with `e_wi = (E(μi) of its side, cos θi)`.
+    #[inline(always)]
+    pub(crate) fn finish(&self, f: f32, outgoing: (f32, f32), e_wi: (f32, f32)) -> f32 {
+        let ((outgoing, wo_z), (e_wi, wi_z)) = (outgoing, e_wi);
+        f + self.lobes_value(wo_z, outgoing, wi_z, e_wi)
     }
 }
 
@@ -331,32 +444,21 @@ impl<D: NormalDistribution> Prepare for CompensatedDielectric<D> {
 
     #[inline(always)]
     fn prepare(&self, wo: Vec3) -> Self::Prepared {
-        let inner = self.inner.prepare(wo);
-        let (side, same, _) = self.side(wo.z > 0.0);
-        let outgoing = if wo.z == 0.0 || side.reflect + side.transmit == 0.0 {
-            0.0
-        } else {
-            (1.0 - same.e(wo.z.abs())).clamp(0.0, 1.0)
-        };
-        CompensatedState {
-            inner,
-            outgoing,
-            probability: outgoing,
-        }
+        self.prepare_given(wo, || self.albedo.row(wo.z).e(wo.z.abs()))
     }
 
     #[inline(always)]
     fn eval_prepared(&self, at: &Self::Prepared, wi: Vec3) -> f32 {
-        self.eval_with(at, wi, self.inner.masking())
+        let f = self.inner.eval_prepared(&at.inner, wi);
+        f + self
+            .lobes_at(at.inner.wo, at.outgoing, at.probability, wi)
+            .0
     }
 
     #[inline(always)]
     fn pdf_prepared(&self, at: &Self::Prepared, wi: Vec3) -> f32 {
         let pdf = self.inner.pdf_prepared(&at.inner, wi);
-        (1.0 - at.probability) * pdf
-            + self
-                .lobes_at(at.inner.wo, at.outgoing, at.probability, wi)
-                .1
+        (1.0 - at.probability) * pdf + self.lobes_pdf(at.inner.wo.z, at.probability, wi.z)
     }
 
     #[inline(always)]
@@ -368,7 +470,17 @@ impl<D: NormalDistribution> Prepare for CompensatedDielectric<D> {
 
     #[inline(always)]
     fn sample_prepared(&self, at: &Self::Prepared, u: Vec2, uc: f32) -> Option<BxdfSample<f32>> {
-        self.sample_with(at, u, uc, self.inner.masking())
+        let wo = at.inner.wo;
+        if wo.z == 0.0 {
+            return None;
+        }
+        let masking = self.inner.masking();
+        let s = self.sample_unfinished::<false>(at, u, uc, masking)?;
+        let e_wi = self.albedo.row(s.wi.z).e(s.wi.z.abs());
+        Some(BxdfSample {
+            f: self.finish(s.f, (at.outgoing, wo.z), (e_wi, s.wi.z)),
+            ..s
+        })
     }
 
     #[inline(always)]

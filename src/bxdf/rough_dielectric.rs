@@ -113,14 +113,14 @@ impl<D: NormalDistribution> RoughDielectric<D> {
     /// pbrt-v4's dielectric does at `η = 1`. The microfacet formulas have no answer there:
     /// every refraction goes to `−wo`, where the half vector `wo + η' wi` is rounding noise.
     #[inline(always)]
-    fn index_matched(&self) -> bool {
+    pub(crate) fn index_matched(&self) -> bool {
         self.eta.get() == 1.0
     }
 
     /// The pass-through sample of an index-matched interface: `−wo`, all of the light
     /// (`F = 0`, `η' = 1`), a delta lobe of probability 1.
     #[inline(always)]
-    fn pass_through(wo: Vec3) -> Option<BxdfSample<f32>> {
+    pub(crate) fn pass_through(wo: Vec3) -> Option<BxdfSample<f32>> {
         let wi = -wo;
         Some(BxdfSample {
             wi,
@@ -277,6 +277,41 @@ fn jacobian_denominator(len2: f64, etap: f32) -> f32 {
     (len2 / (e * e)) as f32
 }
 
+/// A sample's direction as [`RoughDielectric::draw`] forms it.
+pub(crate) struct Drawn {
+    /// The direction.
+    pub(crate) wi: Vec3,
+    /// Whether `uc` picked reflection.
+    reflect: bool,
+    /// Whether the refraction exists (no total internal reflection).
+    refracts: bool,
+}
+
+impl Drawn {
+    /// Whether the sample stands, given its direction's evaluation: a direction exists for
+    /// the lobe picked, the pair is usable, and its configuration is the lobe picked.
+    #[inline(always)]
+    pub(crate) fn fits(&self, e: &Evaluated) -> bool {
+        (self.reflect || self.refracts) && e.usable && e.reflection == self.reflect
+    }
+}
+
+/// A direction evaluated by [`RoughDielectric::evaluate`].
+pub(crate) struct Evaluated {
+    /// The value `f(wo, wi)`.
+    pub(crate) f: f32,
+    /// The density of the interface's sampler.
+    pub(crate) pdf: f32,
+    /// The lobe: glossy reflection or transmission.
+    pub(crate) lobe: Lobes,
+    /// The relative index crossed (1 for reflection).
+    pub(crate) eta: f32,
+    /// Whether the pair is a reflection.
+    reflection: bool,
+    /// Whether the pair is usable (the numbers are a stand-in otherwise).
+    pub(crate) usable: bool,
+}
+
 /// How a microfacet connects a pair of directions.
 struct Configuration {
     /// The microfacet normal, upper hemisphere.
@@ -330,6 +365,61 @@ impl<D: NormalDistribution> RoughDielectric<D> {
         }
     }
 
+    /// The direction a sample draws (not for an index-matched interface): a visible normal
+    /// `m`, then reflection about it or refraction through it as `uc` picks, with probability
+    /// `F(wo·m)`. Both directions are formed and one kept, without a branch.
+    #[inline(always)]
+    pub(crate) fn draw(&self, at: &At<View>, u: Vec2, uc: f32) -> Drawn {
+        let wo = at.wo;
+        let m = self.distribution.sample(&at.state, u);
+        let reflect = crate::sampling::picks(uc, dielectric(wo.dot(m), self.eta));
+        let (refracted, refracts) = refract_away_lane(wo, m, self.eta);
+        let wi = if reflect {
+            reflect_away(wo, m)
+        } else {
+            refracted
+        };
+        Drawn {
+            wi,
+            reflect,
+            refracts,
+        }
+    }
+
+    /// The value, density and lobe at `wi` (of the configuration of `(wo, wi)`, as `eval`
+    /// and `pdf` compute them; D and F(wo·h) once, for both), under `masking`, without a
+    /// branch: an unusable pair's numbers are a stand-in to discard.
+    #[inline(always)]
+    pub(crate) fn evaluate(&self, at: &At<View>, wi: Vec3, masking: Masking) -> Evaluated {
+        let (c, usable) = self.configuration_of_lane(at.wo, wi);
+        let (d, f_wo) = (self.distribution.d(c.h), self.fresnel(at.wo, &c));
+        let pdf = self.density(at, wi, &c, d, f_wo);
+        let f = self.value(at, wi, &c, d, || f_wo, masking);
+        let (lobe, eta) = if c.reflection {
+            (Lobes::GLOSSY_REFLECTION, 1.0)
+        } else {
+            (Lobes::GLOSSY_TRANSMISSION, c.etap)
+        };
+        Evaluated {
+            f,
+            pdf,
+            lobe,
+            eta,
+            reflection: c.reflection,
+            usable,
+        }
+    }
+
+    /// [`Prepare::pdf_prepared`] for a batched loop, the same numbers, without a branch
+    /// ([`eval_lane`](Self::eval_lane)).
+    #[inline(always)]
+    pub(crate) fn pdf_lane(&self, at: &At<View>, wi: Vec3) -> f32 {
+        let (c, usable) = self.configuration_of_lane(at.wo, wi);
+        let (d, f) = (self.distribution.d(c.h), self.fresnel(at.wo, &c));
+        let pdf = self.density(at, wi, &c, d, f);
+        if usable { pdf } else { 0.0 }
+    }
+
     /// [`Prepare::sample_prepared`] under `masking`, without early returns but for the
     /// index-matched interface (the same for every lane of a batch), so that a batched loop
     /// has no branch to turn into selects: both directions are formed and the one `uc` picks
@@ -351,37 +441,17 @@ impl<D: NormalDistribution> RoughDielectric<D> {
                 Self::pass_through(wo)
             };
         }
-        let m = self.distribution.sample(&at.state, u);
-        let reflect = crate::sampling::picks(uc, dielectric(wo.dot(m), self.eta));
-        let (refracted, refracts) = refract_away_lane(wo, m, self.eta);
-        let wi = if reflect {
-            reflect_away(wo, m)
-        } else {
-            refracted
-        };
-        // Evaluate at the configuration of (wo, wi), as `eval` and `pdf` do; D and F(wo·h)
-        // once, for both the value and the density.
-        let (c, usable) = self.configuration_of_lane(wo, wi);
-        let (d, f_wo) = (self.distribution.d(c.h), self.fresnel(wo, &c));
-        let pdf = self.density(at, wi, &c, d, f_wo);
-        let f = self.value(at, wi, &c, d, || f_wo, masking);
-        let (lobe, eta) = if c.reflection {
-            (Lobes::GLOSSY_REFLECTION, 1.0)
-        } else {
-            (Lobes::GLOSSY_TRANSMISSION, c.etap)
-        };
-        let kept = wo.z != 0.0
-            && (reflect || refracts)
-            && usable
-            && c.reflection == reflect
-            && usable_pdf(pdf);
+        let drawn = self.draw(at, u, uc);
+        // Evaluate at the configuration of (wo, wi), as `eval` and `pdf` do.
+        let e = self.evaluate(at, drawn.wi, masking);
+        let kept = wo.z != 0.0 && drawn.fits(&e) && usable_pdf(e.pdf);
         if kept {
             Some(BxdfSample {
-                wi,
-                f,
-                pdf,
-                lobe,
-                eta,
+                wi: drawn.wi,
+                f: e.f,
+                pdf: e.pdf,
+                lobe: e.lobe,
+                eta: e.eta,
             })
         } else {
             None

@@ -1,6 +1,6 @@
 //! [`DielectricAlbedo`]: a rough dielectric interface's directional albedo from both sides.
 
-use super::AlbedoRow;
+use super::{AlbedoRow, CHUNK};
 
 /// The single-scattering directional albedo of a rough dielectric interface (reflection plus
 /// transmission, importance transport: the fraction of the flux scattered) seen from the
@@ -15,4 +15,32 @@ pub struct DielectricAlbedo {
     pub outside: AlbedoRow,
     /// `E_in(μ)`: `wo` inside (`wo.z < 0`, `μ = |cos θo|`), the interface seen with `1/η`.
     pub inside: AlbedoRow,
+}
+
+impl DielectricAlbedo {
+    /// The row of a direction's own side: [`outside`](Self::outside) for `z > 0`, else
+    /// [`inside`](Self::inside).
+    #[inline(always)]
+    pub(crate) fn row(&self, z: f32) -> &AlbedoRow {
+        if z > 0.0 { &self.outside } else { &self.inside }
+    }
+
+    /// `(row(z).e(|z|), z)` of every `z[k]`, into `e[k]` (at most [`CHUNK`] lanes): both rows
+    /// looked up with [`AlbedoRow::e_chunk`], then each lane's side kept (a select), so that
+    /// the numbers are [`row`](Self::row)'s and a batched loop reads no table.
+    #[inline(always)]
+    pub(crate) fn e_chunk(&self, z: &[f32], e: &mut [(f32, f32); CHUNK]) {
+        let n = z.len().min(CHUNK);
+        let mut mu = [0.0; CHUNK];
+        for (mu, &z) in mu.iter_mut().zip(z) {
+            *mu = z.abs();
+        }
+        let (mut outside, mut inside) = ([0.0; CHUNK], [0.0; CHUNK]);
+        self.outside.e_chunk(&mu[..n], &mut outside);
+        self.inside.e_chunk(&mu[..n], &mut inside);
+        let sides = outside.iter().zip(&inside);
+        for ((e, &z), (&o, &i)) in e.iter_mut().zip(z).zip(sides) {
+            *e = (if z > 0.0 { o } else { i }, z);
+        }
+    }
 }
