@@ -627,11 +627,11 @@ fn the_compensated_models_equal_the_scalar_path() {
     assert_both_lobes("plastic compensated, black base", &lobes);
 }
 
-/// The loops that read a table run 256 lanes at a time (the tables looked up in passes of
-/// their own: the energy-compensated microfacet model's, for both compensations, both
-/// plastics' and the compensated glass's): batches of no lane, of one, and ending just before, at and just after a
-/// chunk's end, equal the scalar calls lane by lane, bit for bit. (The other tests' batches
-/// have 4,099 lanes: sixteen whole chunks and three lanes.)
+/// The loops that read a table run 256 lanes at a time (the tables looked up in passes of their
+/// own: the energy-compensated microfacet model's, for both compensations, both plastics' and the
+/// compensated glass's): batches of no lane, of one, and ending just before, at and just after a
+/// chunk's end, equal the scalar calls lane by lane, bit for bit. (The other tests' batches have
+/// 4,099 lanes: sixteen whole chunks and three lanes.)
 #[test]
 fn the_chunked_loops_equal_the_scalar_path_at_every_chunk_boundary() {
     use lobe::bxdf::{CompensatedMicrofacet, Compensation};
