@@ -71,6 +71,14 @@ pub fn dir(theta_deg: f32, phi: f32) -> Vec3 {
     Vec3::new(t.sin() * phi.cos(), t.sin() * phi.sin(), t.cos())
 }
 
+/// The directions at polar angles `thetas` (degrees, azimuth 0.4), each followed by its opposite.
+pub fn both_sides(thetas: &[f32]) -> Vec<Vec3> {
+    thetas
+        .iter()
+        .flat_map(|&t| [dir(t, 0.4), -dir(t, 0.4)])
+        .collect()
+}
+
 /// The angle between two directions given in `f64`, as the `atan2` of the cross and dot
 /// products of the normalised vectors (accurate at small angles, where `acos` is not).
 pub fn angle_f64(a: [f64; 3], b: [f64; 3]) -> f64 {
