@@ -46,12 +46,7 @@ fn inputs() -> Inputs {
     let (mut wo, mut wi) = (Vec::new(), Vec::new());
     for _ in 0..N {
         let o = direction(&mut rng);
-        let i = match rng.next_u32() % 6 {
-            0 => Vec3::new(-o.x, -o.y, o.z),
-            1 => o,
-            2 => -o,
-            _ => direction(&mut rng),
-        };
+        let i = common::partner(&mut rng, o, 6, direction);
         wo.push(o);
         wi.push(i);
     }
