@@ -9,8 +9,8 @@ mod common;
 use lobe::batch::{Batch, Lanes, LengthError, SampleOut, Vec2s, Vec3s, Vec3sMut};
 use lobe::bxdf::{
     BlinnPhong, BlinnPhongForm, Bxdf, DisneyDiffuse, EnergyPreservingOrenNayar, Glazed, Lambert,
-    Lobes, Microfacet, Mirror, OrenNayar, Phong, Plastic, RoughDielectric, SmoothDielectric,
-    ThinDielectric, TransportMode,
+    Lobes, Microfacet, Mirror, OrenNayar, Phong, Plastic, Prepare, RoughDielectric,
+    SmoothDielectric, ThinDielectric, TransportMode,
 };
 use lobe::fresnel::{Conductor, Dielectric, Schlick};
 use lobe::microfacet::{Beckmann, BlinnPhongNdf, Ggx, Gtr, Masking};
@@ -46,12 +46,7 @@ fn inputs() -> Inputs {
     let (mut wo, mut wi) = (Vec::new(), Vec::new());
     for _ in 0..N {
         let o = direction(&mut rng);
-        let i = match rng.next_u32() % 6 {
-            0 => Vec3::new(-o.x, -o.y, o.z),
-            1 => o,
-            2 => -o,
-            _ => direction(&mut rng),
-        };
+        let i = common::partner(&mut rng, o, 6, direction);
         wo.push(o);
         wi.push(i);
     }
@@ -161,6 +156,11 @@ fn close<S: Spectrum>(a: S, b: S, tol: f32) -> bool {
 /// crate meets (the conformance matrix).
 const CONSISTENCY: f32 = 1e-4;
 
+/// A model the checks take: batched, with one spectrum for both paths, held in [`Buffers`].
+trait Checked: Batch<Spectrum: Buffers> + Bxdf<Spectrum = <Self as Prepare>::Spectrum> {}
+
+impl<M: Batch<Spectrum: Buffers> + Bxdf<Spectrum = <M as Prepare>::Spectrum>> Checked for M {}
+
 /// Checks every lane of `m`'s batched calls against its scalar calls, bit for bit (the
 /// sample's lobe and `eta` too), and returns the lobes the scalar samples came from (so that a
 /// caller can ask that every branch of a sampler was compared). Where a lane's sample is not
@@ -168,39 +168,20 @@ const CONSISTENCY: f32 = 1e-4;
 /// direction (to `1e-3`: a sampler computes them by another route), so that a renderer can
 /// weigh it against a light sample; a specular lane's `pdf` is a lobe's probability instead,
 /// which the lobe flag tells apart.
-fn check<M: Batch + Bxdf<Spectrum = <M as lobe::bxdf::Prepare>::Spectrum>>(
-    name: &str,
-    m: &M,
-) -> Vec<Lobes>
-where
-    <M as lobe::bxdf::Prepare>::Spectrum: Buffers,
-{
+fn check<M: Checked>(name: &str, m: &M) -> Vec<Lobes> {
     check_lanes(name, m, true)
 }
 
 /// [`check`] for a stochastic layered model, whose sample carries its own random walk's
 /// estimates of `f` and `pdf`, not `eval`'s and `pdf`'s: compared with the scalar calls bit
 /// for bit only.
-fn check_stochastic<M: Batch + Bxdf<Spectrum = <M as lobe::bxdf::Prepare>::Spectrum>>(
-    name: &str,
-    m: &M,
-) -> Vec<Lobes>
-where
-    <M as lobe::bxdf::Prepare>::Spectrum: Buffers,
-{
+fn check_stochastic<M: Checked>(name: &str, m: &M) -> Vec<Lobes> {
     check_lanes(name, m, false)
 }
 
 /// [`check`], comparing a non-specular sample with `eval` and `pdf` where `deterministic`.
-fn check_lanes<M: Batch + Bxdf<Spectrum = <M as lobe::bxdf::Prepare>::Spectrum>>(
-    name: &str,
-    m: &M,
-    deterministic: bool,
-) -> Vec<Lobes>
-where
-    <M as lobe::bxdf::Prepare>::Spectrum: Buffers,
-{
-    type S<M> = <M as lobe::bxdf::Prepare>::Spectrum;
+fn check_lanes<M: Checked>(name: &str, m: &M, deterministic: bool) -> Vec<Lobes> {
+    type S<M> = <M as Prepare>::Spectrum;
     let i = inputs();
     let (wo, wi) = (Soa::of(&i.wo), Soa::of(&i.wi));
     let (ux, uy): (Vec<f32>, Vec<f32>) = i.u.iter().map(|u| (u.x, u.y)).unzip();
@@ -656,12 +637,8 @@ fn the_chunked_loops_equal_the_scalar_path_at_every_chunk_boundary() {
 }
 
 /// [`the_chunked_loops_equal_the_scalar_path_at_every_chunk_boundary`] for one model.
-fn at_every_chunk_boundary<M>(model: &str, m: &M)
-where
-    M: Batch + Bxdf<Spectrum = <M as lobe::bxdf::Prepare>::Spectrum>,
-    <M as lobe::bxdf::Prepare>::Spectrum: Buffers,
-{
-    type S<M> = <M as lobe::bxdf::Prepare>::Spectrum;
+fn at_every_chunk_boundary<M: Checked>(model: &str, m: &M) {
+    type S<M> = <M as Prepare>::Spectrum;
     let i = inputs();
     for n in [0, 1, 255, 256, 257, 511, 512, 513] {
         let name = format!("{model}, {n} lanes");

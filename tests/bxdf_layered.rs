@@ -102,10 +102,7 @@ fn every_layered_model_obeys_every_law_in_expectation() {
     // The combinators of a stochastic model are stochastic and checked so too.
     let two_sided = TwoSided::new(coated);
     let both_sides = Config {
-        directions: [0.0_f32, 60.0, 85.0]
-            .iter()
-            .flat_map(|&t| [common::dir(t, 0.4), -common::dir(t, 0.4)])
-            .collect(),
+        directions: common::both_sides(&[0.0, 60.0, 85.0]),
         ..config()
     };
     assert!(two_sided.stochastic());

@@ -129,10 +129,7 @@ fn two_sided_is_the_model_above_and_its_mirror_below() {
         }
     }
     let both_sides = Config {
-        directions: [0.0_f32, 40.0, 80.0]
-            .iter()
-            .flat_map(|&t| [common::dir(t, 0.4), -common::dir(t, 0.4)])
-            .collect(),
+        directions: common::both_sides(&[0.0, 40.0, 80.0]),
         ..config()
     };
     let report = check_bxdf("TwoSided(GGX α=0.2)", &two, &both_sides);

@@ -261,6 +261,13 @@ fn worst_g1_error(
     worst
 }
 
+/// Prints `case`'s largest `|ΔG1|` and its angle (`worst`), asserts it ≤ `bound`, returns it.
+fn assert_g1_within(case: &str, worst: (f32, f64), bound: f32) -> f32 {
+    eprintln!("{case}: max |ΔG1| = {:.2e} at θ = {:.4}°", worst.0, worst.1);
+    assert!(worst.0 <= bound, "{case}: {worst:?}");
+    worst.0
+}
+
 /// The tabulated `G1` against exact Smith `G1` in `f64` over the whole domain of `α` and
 /// `γ`: GGX's closed form at `γ = 2` (Heitz 2014, eq. 72, `G1 = 2 / (1 + √(1 + α² tan² θ))`)
 /// from `α = 1e-4` to 10, and the quadrature of the projected-area identity elsewhere,
@@ -297,12 +304,8 @@ fn tabulated_g1_matches_f64_references() {
                 worst = (err, c.acos().to_degrees());
             }
         }
-        eprintln!(
-            "γ = 2, α = {alpha:e}: max |ΔG1| = {:.2e} at θ = {:.4}°",
-            worst.0, worst.1
-        );
-        assert!(worst.0 <= BOUND, "γ = 2, α = {alpha}: {worst:?}");
-        overall = overall.max(worst.0);
+        let case = format!("γ = 2, α = {alpha:e}");
+        overall = overall.max(assert_g1_within(&case, worst, BOUND));
     }
     let alphas = [
         1e-4_f32, 3e-4, 1e-3, 3e-3, 0.01, 0.03, 0.1, 0.3, 0.7, 1.0, 1.5, 3.0, 10.0,
@@ -313,12 +316,8 @@ fn tabulated_g1_matches_f64_references() {
         .flat_map(|a| gammas.into_iter().map(move |g| (a, g)))
     {
         let worst = worst_g1_error(&gtr(alpha, gamma), &d_f64(alpha, gamma), &dirs);
-        eprintln!(
-            "γ = {gamma}, α = {alpha:e}: max |ΔG1| = {:.2e} at θ = {:.4}°",
-            worst.0, worst.1
-        );
-        assert!(worst.0 <= BOUND, "γ = {gamma}, α = {alpha}: {worst:?}");
-        overall = overall.max(worst.0);
+        let case = format!("γ = {gamma}, α = {alpha:e}");
+        overall = overall.max(assert_g1_within(&case, worst, BOUND));
     }
     eprintln!("max |ΔG1| = {overall:.2e}");
 }
@@ -348,12 +347,8 @@ fn blinn_phong_exact_smith_matches_the_f64_reference() {
             (p + 2.0) / (2.0 * PI) * cos_p
         };
         let worst = worst_g1_error(&d, &dd, &dirs);
-        eprintln!(
-            "Blinn-Phong α = {alpha:e}: max |ΔG1| = {:.2e} at θ = {:.4}°",
-            worst.0, worst.1
-        );
-        assert!(worst.0 <= BOUND, "Blinn-Phong α = {alpha}: {worst:?}");
-        overall = overall.max(worst.0);
+        let case = format!("Blinn-Phong α = {alpha:e}");
+        overall = overall.max(assert_g1_within(&case, worst, BOUND));
     }
     eprintln!("Blinn-Phong: max |ΔG1| = {overall:.2e}");
 }

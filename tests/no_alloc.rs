@@ -12,6 +12,8 @@
 //! function), and the results are folded into a checksum passed through `black_box`, so
 //! that the optimiser cannot drop the calls being counted.
 
+mod common;
+
 use lobe::bxdf::{
     BlinnPhong, BlinnPhongForm, DisneyDiffuse, EnergyPreservingOrenNayar, Glazed, Lambert,
     Microfacet, Mirror, OrenNayar, Phong, Plastic, Prepare, RoughDielectric, SmoothDielectric,
@@ -126,12 +128,7 @@ fn inputs() -> Inputs {
     };
     for _ in 0..N {
         let wo = direction(&mut rng);
-        let wi = match rng.next_u32() % 8 {
-            0 => Vec3::new(-wo.x, -wo.y, wo.z),
-            1 => wo,
-            2 => -wo,
-            _ => direction(&mut rng),
-        };
+        let wi = common::partner(&mut rng, wo, 8, direction);
         i.wo.push(wo);
         i.wi.push(wi);
         i.u.push(rng.next_vec2());

@@ -9,6 +9,7 @@ pub mod reference;
 pub mod wire;
 
 use lobe::Vec3;
+use lobe::verify::Pcg32;
 use proptest::test_runner::{Config, RngSeed};
 
 /// Gold's complex index of refraction at the red, green and blue primaries (η, k), the
@@ -69,6 +70,24 @@ pub fn assert_falling(what: &str, estimates: &[(String, lobe::verify::Estimate)]
 pub fn dir(theta_deg: f32, phi: f32) -> Vec3 {
     let t = theta_deg.to_radians();
     Vec3::new(t.sin() * phi.cos(), t.sin() * phi.sin(), t.cos())
+}
+
+/// A `wi` for `wo` by `rng.next_u32() % kinds`: its mirror, itself, its opposite, else `fresh`.
+pub fn partner(rng: &mut Pcg32, wo: Vec3, kinds: u32, fresh: fn(&mut Pcg32) -> Vec3) -> Vec3 {
+    match rng.next_u32() % kinds {
+        0 => Vec3::new(-wo.x, -wo.y, wo.z),
+        1 => wo,
+        2 => -wo,
+        _ => fresh(rng),
+    }
+}
+
+/// The directions at polar angles `thetas` (degrees, azimuth 0.4), each followed by its opposite.
+pub fn both_sides(thetas: &[f32]) -> Vec<Vec3> {
+    thetas
+        .iter()
+        .flat_map(|&t| [dir(t, 0.4), -dir(t, 0.4)])
+        .collect()
 }
 
 /// The angle between two directions given in `f64`, as the `atan2` of the cross and dot

@@ -19,9 +19,18 @@ pub fn assert_wire<T: Serialize + DeserializeOwned + PartialEq + Debug>(value: &
 }
 
 /// Asserts that `json` is refused with a message that starts with `message`.
+#[track_caller]
 pub fn assert_refused<T: DeserializeOwned + Debug>(json: &str, message: &str) {
     match serde_json::from_str::<T>(json) {
         Ok(v) => panic!("{json} was accepted as {v:?}"),
         Err(e) => assert!(e.to_string().starts_with(message), "{json}: {e}"),
+    }
+}
+
+/// [`assert_refused`] for each `(json, message)` of `cases`.
+#[track_caller]
+pub fn assert_all_refused<T: DeserializeOwned + Debug>(cases: &[(&str, &str)]) {
+    for &(json, message) in cases {
+        assert_refused::<T>(json, message);
     }
 }
