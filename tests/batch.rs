@@ -181,24 +181,43 @@ fn check_stochastic<M: Checked>(name: &str, m: &M) -> Vec<Lobes> {
 
 /// [`check`], comparing a non-specular sample with `eval` and `pdf` where `deterministic`.
 fn check_lanes<M: Checked>(name: &str, m: &M, deterministic: bool) -> Vec<Lobes> {
+    let (lobes, checked_samples, non_specular) = compare_lanes(name, m, deterministic, N);
+    eprintln!("{name}: {checked_samples} samples, {non_specular} not specular");
+    // The comparison means something only where there are samples: at α = 10 most
+    // reflections leave below the horizon, and about one lane in ten still samples.
+    assert!(
+        checked_samples > 200,
+        "{name}: only {checked_samples} lanes sampled"
+    );
+    lobes
+}
+
+/// The comparisons of [`check_lanes`] on the first `n` lanes of the inputs: the lobes the
+/// scalar samples came from, how many lanes sampled, and how many of those not specularly.
+fn compare_lanes<M: Checked>(
+    name: &str,
+    m: &M,
+    deterministic: bool,
+    n: usize,
+) -> (Vec<Lobes>, usize, usize) {
     type S<M> = <M as Prepare>::Spectrum;
     let i = inputs();
-    let (wo, wi) = (Soa::of(&i.wo), Soa::of(&i.wi));
-    let (ux, uy): (Vec<f32>, Vec<f32>) = i.u.iter().map(|u| (u.x, u.y)).unzip();
+    let (wo, wi) = (Soa::of(&i.wo[..n]), Soa::of(&i.wi[..n]));
+    let (ux, uy): (Vec<f32>, Vec<f32>) = i.u[..n].iter().map(|u| (u.x, u.y)).unzip();
     let u = Vec2s { x: &ux, y: &uy };
 
-    let mut f = S::<M>::store(N);
+    let mut f = S::<M>::store(n);
     m.eval_batch(wo.view(), wi.view(), S::<M>::lanes_mut(&mut f))
         .unwrap();
-    let mut pdf = vec![0.0; N];
+    let mut pdf = vec![0.0; n];
     m.pdf_batch(wo.view(), wi.view(), &mut pdf).unwrap();
-    let (mut swi, mut sf, mut spdf) = (Soa::zeros(N), S::<M>::store(N), vec![0.0; N]);
+    let (mut swi, mut sf, mut spdf) = (Soa::zeros(n), S::<M>::store(n), vec![0.0; n]);
     // Filled with values no lane writes, so that a lane the loop skipped shows.
-    let (mut slobe, mut seta) = (vec![Lobes::SPECULAR_TRANSMISSION; N], vec![-1.0; N]);
+    let (mut slobe, mut seta) = (vec![Lobes::SPECULAR_TRANSMISSION; n], vec![-1.0; n]);
     m.sample_batch(
         wo.view(),
         u,
-        &i.uc,
+        &i.uc[..n],
         SampleOut {
             wi: swi.view_mut(),
             f: S::<M>::lanes_mut(&mut sf),
@@ -209,16 +228,16 @@ fn check_lanes<M: Checked>(name: &str, m: &M, deterministic: bool) -> Vec<Lobes>
     )
     .unwrap();
     // The batched eval and pdf at the sampled directions.
-    let mut at_f = S::<M>::store(N);
+    let mut at_f = S::<M>::store(n);
     m.eval_batch(wo.view(), swi.view(), S::<M>::lanes_mut(&mut at_f))
         .unwrap();
-    let mut at_pdf = vec![0.0; N];
+    let mut at_pdf = vec![0.0; n];
     m.pdf_batch(wo.view(), swi.view(), &mut at_pdf).unwrap();
     let mut non_specular = 0;
 
     let mut checked_samples = 0;
     let mut lobes = Vec::new();
-    for k in 0..N {
+    for k in 0..n {
         let (o, w) = (i.wo[k], i.wi[k]);
         let want = m.eval(o, w);
         assert!(
@@ -285,14 +304,7 @@ fn check_lanes<M: Checked>(name: &str, m: &M, deterministic: bool) -> Vec<Lobes>
             ),
         }
     }
-    eprintln!("{name}: {checked_samples} samples, {non_specular} not specular");
-    // The comparison means something only where there are samples: at α = 10 most
-    // reflections leave below the horizon, and about one lane in ten still samples.
-    assert!(
-        checked_samples > 200,
-        "{name}: only {checked_samples} lanes sampled"
-    );
-    lobes
+    (lobes, checked_samples, non_specular)
 }
 
 /// Asserts that the scalar samples `check` compared came from both the diffuse and the glossy
@@ -636,57 +648,11 @@ fn the_chunked_loops_equal_the_scalar_path_at_every_chunk_boundary() {
     at_every_chunk_boundary("compensated glass", &compensated);
 }
 
-/// [`the_chunked_loops_equal_the_scalar_path_at_every_chunk_boundary`] for one model.
+/// [`the_chunked_loops_equal_the_scalar_path_at_every_chunk_boundary`] for one model: the
+/// comparisons of [`check`] on the first `n` lanes.
 fn at_every_chunk_boundary<M: Checked>(model: &str, m: &M) {
-    type S<M> = <M as Prepare>::Spectrum;
-    let i = inputs();
     for n in [0, 1, 255, 256, 257, 511, 512, 513] {
-        let name = format!("{model}, {n} lanes");
-        let (wo, wi) = (Soa::of(&i.wo[..n]), Soa::of(&i.wi[..n]));
-        let (ux, uy): (Vec<f32>, Vec<f32>) = i.u[..n].iter().map(|u| (u.x, u.y)).unzip();
-        let mut f = S::<M>::store(n);
-        m.eval_batch(wo.view(), wi.view(), S::<M>::lanes_mut(&mut f))
-            .unwrap();
-        let mut pdf = vec![0.0; n];
-        m.pdf_batch(wo.view(), wi.view(), &mut pdf).unwrap();
-        let (mut swi, mut sf, mut spdf) = (Soa::zeros(n), S::<M>::store(n), vec![0.0; n]);
-        let (mut slobe, mut seta) = (vec![Lobes::SPECULAR_TRANSMISSION; n], vec![-1.0; n]);
-        let out = SampleOut {
-            wi: swi.view_mut(),
-            f: S::<M>::lanes_mut(&mut sf),
-            pdf: &mut spdf,
-            lobe: &mut slobe,
-            eta: &mut seta,
-        };
-        m.sample_batch(wo.view(), Vec2s { x: &ux, y: &uy }, &i.uc[..n], out)
-            .unwrap();
-        for k in 0..n {
-            let (o, w) = (i.wo[k], i.wi[k]);
-            let f = S::<M>::read(&f, k);
-            assert!(same(f, m.eval(o, w)), "{name}: eval, lane {k}");
-            assert_eq!(
-                pdf[k].to_bits(),
-                m.pdf(o, w).to_bits(),
-                "{name}: pdf, lane {k}"
-            );
-            let (w, v, p, l, e) = match m.sample(o, i.u[k], i.uc[k]) {
-                Some(s) => (s.wi, s.f, s.pdf, s.lobe, s.eta),
-                None => (Vec3::ZERO, Spectrum::zero(), 0.0, Lobes::NONE, 0.0),
-            };
-            assert!(same(swi.get(k), w), "{name}: sampled direction, lane {k}");
-            let sampled = S::<M>::read(&sf, k);
-            assert!(same(sampled, v), "{name}: sample's value, lane {k}");
-            assert_eq!(
-                spdf[k].to_bits(),
-                p.to_bits(),
-                "{name}: sample's pdf, lane {k}"
-            );
-            assert_eq!(
-                (slobe[k], seta[k].to_bits()),
-                (l, e.to_bits()),
-                "{name}: lane {k}"
-            );
-        }
+        compare_lanes(&format!("{model}, {n} lanes"), m, true, n);
     }
 }
 
