@@ -58,11 +58,12 @@
 //! The microfacet models (plain and energy-compensated, reflecting and refracting) have one
 //! loop per masking term, and the energy-compensated microfacet model one per masking term
 //! and compensation (with the choice between Kulla & Conty's lobe and Turquin's scaling
-//! inside the loop, LLVM weighed both samplers in every lane). That model's loops, and both
-//! plastics', take 256 lanes at a time: a pass looks the albedo table up at each lane's `wo`
-//! (and `wi`), the [`AlbedoRow`](crate::tables::AlbedoRow) lookup split into the positions,
-//! which vectorise, and the reads (the compensated plastic looks up two tables, its coat
-//! albedo and the coat's own); then the model's arithmetic runs in a loop that reads no
+//! inside the loop, LLVM weighed both samplers in every lane). That model's loops, both
+//! plastics' and the compensated glass's take 256 lanes at a time: a pass looks the albedo
+//! table up at each lane's `wo` (and `wi`), the [`AlbedoRow`](crate::tables::AlbedoRow) lookup
+//! split into the positions, which vectorise, and the reads (the compensated plastic looks up
+//! two tables, its coat albedo and the coat's own; the glass both sides' rows, then keeps each
+//! lane's side with a select); then the model's arithmetic runs in a loop that reads no
 //! table; `sample` then looks the tables up at the sampled directions and adds what needs
 //! them (the compensation lobe's value, the plastic's diffuse term) in a last pass. The chunk's
 //! buffers are on the stack (up to 14 KiB, for a `Vec4` compensated plastic's `sample`; zeroed
@@ -82,24 +83,27 @@
 //! the same cosine-weighted direction, so a lane forms two directions and evaluates the coat
 //! once). The plastics' loops call the coat with its masking term (and the compensated coat's
 //! compensation) fixed, as the microfacet models' loops do (read per lane, the term kept the
-//! loop from vectorising). The
-//! compensated glass's batched `sample` still branches between lobes and runs at about the
-//! scalar speed (drawing from both lobes in every lane did not vectorise either: LLVM's cost
-//! model finds vectorising that loop not beneficial).
+//! loop from vectorising). The compensated glass's batched `sample` forms the compensation
+//! lobes' direction and the interface's in every lane and evaluates the interface once, at
+//! the one the lane picks; an index-matched interface's delta sample (the same for every lane)
+//! is chosen by a select, not a branch: that branch, and a short-circuit `||` in the glass's
+//! prepared state, had kept its `sample` and `pdf` loops scalar under AVX2 (LLVM's
+//! loop-vectoriser remarks, `-C llvm-args=-pass-remarks-missed=loop-vectorize`, name the
+//! loops it leaves and why).
 //!
 //! **Under AVX2 without AVX-512** LLVM's cost model weighs a gather, an `f64` operation and a
 //! branch that a loop must turn into selects more heavily than under AVX-512, and some loops stay
 //! scalar there, or nearly (measured on an AMD EPYC with AVX2 and FMA only, 2026-11-29; the
-//! README's "Against other implementations" has the run): the compensated glass's calls, whose
-//! albedo tables are read per lane (a gather; the passes below left the glass's loops scalar, its
-//! lane code branching between sides). The energy-compensated microfacet model's loops and both
-//! plastics' stayed scalar too until they looked their tables up in passes of their own (above),
+//! README's "Against other implementations" has the run). The energy-compensated microfacet
+//! model's loops, both plastics' and the compensated glass's stayed scalar until they looked their tables up in passes of their own (above),
 //! and their `sample` evaluated the drawn lobe without early returns and finished its lanes without
 //! a branch: `cargo bench -p lobe-peers`, old and new builds interleaved over three rounds, 4,096
 //! lanes, the batched calls went to 0.20× (`eval`), 0.23× (`pdf`) and 0.21× (`sample`) of the old
 //! for the compensated gold conductor, 0.19×, 0.64× and 0.30× for the plastic (whose `pdf` loop was
 //! already vectorised) and 0.25×, 0.20× and 0.30× for the compensated plastic (a probe, five
-//! rounds, had the compensated Schlick conductor's at 0.64×, 0.33× and 0.43×). The rough
+//! rounds, had the compensated Schlick conductor's at 0.64×, 0.33× and 0.43×); the compensated
+//! glass's, once its lanes lost their last branches (above), 0.45×, 0.35× and 0.35× (a probe,
+//! four rounds). The rough
 //! dielectric's `eval` and `sample` stayed scalar there too until their batched loops took forms
 //! without early returns: every lane forms both directions, the configuration and the value, and an
 //! unusable lane discards them (the same numbers). With its `f64` half vector (for refraction `wo +

@@ -1,7 +1,8 @@
 //! The batched loops of a model that reads albedo tables at each lane's directions (the
-//! energy-compensated microfacet model's, both plastics'): a chunk of lanes at a time, the
-//! tables first ([`AlbedoRow::e_chunk`]; the compensated plastic reads two, its coat albedo
-//! and the coat's own `E`), then the model's arithmetic in a loop that reads no table (and for
+//! energy-compensated microfacet model's, both plastics', the compensated glass's): a chunk of
+//! lanes at a time, the tables first ([`AlbedoRow::e_chunk`]; the compensated plastic reads
+//! two, its coat albedo and the coat's own `E`; the glass the row of each direction's side),
+//! then the model's arithmetic in a loop that reads no table (and for
 //! `sample`, the tables at the sampled directions, then the samples' values).
 //!
 //! A read at a different place in each lane is a gather. On a target with AVX2 and no
