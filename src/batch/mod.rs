@@ -94,21 +94,21 @@
 //! **Under AVX2 without AVX-512** LLVM's cost model weighs a gather, an `f64` operation and a
 //! branch that a loop must turn into selects more heavily than under AVX-512, and some loops stay
 //! scalar there, or nearly (measured on an AMD EPYC with AVX2 and FMA only, 2026-11-29; the
-//! README's "Against other implementations" has the run). The energy-compensated microfacet
-//! model's loops, both plastics' and the compensated glass's stayed scalar until they looked their tables up in passes of their own (above),
-//! and their `sample` evaluated the drawn lobe without early returns and finished its lanes without
-//! a branch: `cargo bench -p lobe-peers`, old and new builds interleaved over three rounds, 4,096
-//! lanes, the batched calls went to 0.20× (`eval`), 0.23× (`pdf`) and 0.21× (`sample`) of the old
-//! for the compensated gold conductor, 0.19×, 0.64× and 0.30× for the plastic (whose `pdf` loop was
-//! already vectorised) and 0.25×, 0.20× and 0.30× for the compensated plastic (a probe, five
-//! rounds, had the compensated Schlick conductor's at 0.64×, 0.33× and 0.43×); the compensated
-//! glass's, once its lanes lost their last branches (above), 0.45×, 0.35× and 0.35× (a probe,
-//! four rounds). The rough
-//! dielectric's `eval` and `sample` stayed scalar there too until their batched loops took forms
-//! without early returns: every lane forms both directions, the configuration and the value, and an
-//! unusable lane discards them (the same numbers). With its `f64` half vector (for refraction `wo +
-//! η' wi` cancels), the branches had tipped the balance. AVX-512 vectorised all of them before the
-//! table passes; the passes are not measured there.
+//! README's "Against other implementations" has the run). The energy-compensated microfacet model's
+//! loops, both plastics' and the compensated glass's stayed scalar until they looked their tables
+//! up in passes of their own (above), and their `sample` evaluated the drawn lobe without early
+//! returns and finished its lanes without a branch: `cargo bench -p lobe-peers`, old and new builds
+//! interleaved over three rounds, 4,096 lanes, the batched calls went to 0.20× (`eval`), 0.23×
+//! (`pdf`) and 0.21× (`sample`) of the old for the compensated gold conductor, 0.19×, 0.64× and
+//! 0.30× for the plastic (whose `pdf` loop was already vectorised) and 0.25×, 0.20× and 0.30× for
+//! the compensated plastic (a probe, five rounds, had the compensated Schlick conductor's at 0.64×,
+//! 0.33× and 0.43×); the compensated glass's, once its lanes lost their last branches (above),
+//! 0.45×, 0.35× and 0.35× (a probe, four rounds). The rough dielectric's `eval` and `sample` stayed
+//! scalar there too until their batched loops took forms without early returns: every lane forms
+//! both directions, the configuration and the value, and an unusable lane discards them (the same
+//! numbers). With its `f64` half vector (for refraction `wo + η' wi` cancels), the branches had
+//! tipped the balance. AVX-512 vectorised all of them before the table passes; the passes are not
+//! measured there.
 //!
 //! **Batch size.** Keep a batch within the L2 cache: an RGB `eval`'s slices take 36 bytes per
 //! lane, so 2¹⁵ lanes are 1.1 MiB (the machine measured here has a 2 MiB L2). The outputs are
