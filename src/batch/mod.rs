@@ -103,12 +103,12 @@
 //! 0.30× for the plastic (whose `pdf` loop was already vectorised) and 0.25×, 0.20× and 0.30× for
 //! the compensated plastic (a probe, five rounds, had the compensated Schlick conductor's at 0.64×,
 //! 0.33× and 0.43×); the compensated glass's, once its lanes lost their last branches (above),
-//! 0.45×, 0.35× and 0.35× (a probe, four rounds). The rough dielectric's `eval` and `sample` stayed
-//! scalar there too until their batched loops took forms without early returns: every lane forms
-//! both directions, the configuration and the value, and an unusable lane discards them (the same
-//! numbers). With its `f64` half vector (for refraction `wo + η' wi` cancels), the branches had
-//! tipped the balance. AVX-512 vectorised all of them before the table passes; the passes are not
-//! measured there.
+//! 0.38×, 0.27× and 0.37× (the same bench, three rounds). The rough dielectric's `eval` and
+//! `sample` stayed scalar there too until their batched loops took forms without early returns:
+//! every lane forms both directions, the configuration and the value, and an unusable lane discards
+//! them (the same numbers). With its `f64` half vector (for refraction `wo + η' wi` cancels), the
+//! branches had tipped the balance. AVX-512 vectorised all of them before the table passes; the
+//! passes are not measured there.
 //!
 //! **Batch size.** Keep a batch within the L2 cache: an RGB `eval`'s slices take 36 bytes per
 //! lane, so 2¹⁵ lanes are 1.1 MiB (the machine measured here has a 2 MiB L2). The outputs are
