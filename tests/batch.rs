@@ -414,7 +414,10 @@ fn the_other_models_equal_the_scalar_path() {
     check("Lambert", &Lambert::new(rgb).unwrap());
     check("Lambert mono", &Lambert::new(0.7_f32).unwrap());
     check("Oren-Nayar", &OrenNayar::new(rgb, 0.4).unwrap());
-    check("EON", &EnergyPreservingOrenNayar::new(rgb, 0.4).unwrap());
+    // EON's loops fix its albedo's form, fitted or exact: both compared.
+    let eon = EnergyPreservingOrenNayar::new(rgb, 0.4).unwrap();
+    check("EON", &eon);
+    check("EON, exact albedo", &eon.with_exact_albedo());
     check(
         "Disney diffuse",
         &DisneyDiffuse::new(rgb, Roughness::new(0.5).unwrap()).unwrap(),
@@ -453,7 +456,14 @@ fn the_other_models_equal_the_scalar_path() {
     );
     assert_both_lobes("Plastic, monochrome", &plastic);
     check("Mirror", &Mirror::new(Dielectric { eta: glass }));
-    check("smooth glass", &SmoothDielectric::new(glass));
+    // The smooth glass's lanes form both directions and select one (its transport mode by a
+    // select too): both modes, both lobes compared.
+    for mode in [TransportMode::Radiance, TransportMode::Importance] {
+        let name = format!("smooth glass, {mode:?}");
+        let lobes = check(&name, &SmoothDielectric::new(glass).with_mode(mode));
+        let wanted = [Lobes::SPECULAR_REFLECTION, Lobes::SPECULAR_TRANSMISSION];
+        assert_sampled(&name, &lobes, &wanted);
+    }
     check("thin glass", &ThinDielectric::new(glass));
 }
 

@@ -16,7 +16,7 @@ use super::tabulated::chunked;
 use super::tabulated::{TableLanes, TableOp, TableSample, TableSampleOp};
 use super::{Lanes, LengthError, SampleOut, Vec2s, Vec3s, run};
 use super::{eval_kernel, pdf_kernel, sample_kernel};
-use crate::bxdf::{At, BxdfSample, CompensatedState, Compensation, Prepare};
+use crate::bxdf::{At, BxdfSample, CompensatedState, Compensation, FixedForm, Prepare};
 use crate::bxdf::{CompensatedPlastic, PlasticState};
 use crate::microfacet::Masking;
 use crate::microfacet::View;
@@ -25,7 +25,6 @@ use glam::{Vec2, Vec3};
 
 impl<S: Spectrum + Lanes> Batch for Lambert<S> {}
 impl<S: Spectrum + Lanes> Batch for OrenNayar<S> {}
-impl<S: Spectrum + Lanes> Batch for EnergyPreservingOrenNayar<S> {}
 impl<S: Spectrum + Lanes> Batch for DisneyDiffuse<S> {}
 impl<S: Spectrum + Lanes> Batch for Phong<S> {}
 impl<S: Spectrum + Lanes> Batch for BlinnPhong<S> {}
@@ -175,6 +174,44 @@ macro_rules! batch_by {
 
 batch_by!(impl<D: NormalDistribution + Clone, F: Fresnel>
     for Microfacet<D, F> where F::Spectrum, by_masking, run, Plain);
+
+/// EON's lanes with its albedo's form, exact or fitted, fixed ([`FixedForm`]).
+struct FixedExact<const EXACT: bool>;
+
+impl<const EXACT: bool, S: Spectrum> LaneOp<EnergyPreservingOrenNayar<S>> for FixedExact<EXACT> {
+    #[inline(always)]
+    fn eval(m: &EnergyPreservingOrenNayar<S>, wo: Vec3, wi: Vec3) -> S {
+        Plain::eval(&FixedForm::<S, EXACT>(m), wo, wi)
+    }
+
+    #[inline(always)]
+    fn pdf(m: &EnergyPreservingOrenNayar<S>, wo: Vec3, wi: Vec3) -> f32 {
+        Plain::pdf(m, wo, wi)
+    }
+
+    #[inline(always)]
+    fn sample(
+        m: &EnergyPreservingOrenNayar<S>,
+        wo: Vec3,
+        u: Vec2,
+        uc: f32,
+    ) -> Option<BxdfSample<S>> {
+        Plain::sample(&FixedForm::<S, EXACT>(m), wo, u, uc)
+    }
+}
+
+/// Chooses EON's loop for its albedo's form.
+macro_rules! by_form {
+    ($run:ident, $m:expr, $kernel:ident($($arg:expr),*)) => {
+        if $m.is_exact() {
+            $run($kernel::<_, FixedExact<true>>($m, $($arg),*))
+        } else {
+            $run($kernel::<_, FixedExact<false>>($m, $($arg),*))
+        }
+    };
+}
+
+batch_by!(impl<S: Spectrum + Lanes> for EnergyPreservingOrenNayar<S> where S, by_form, run, Plain);
 batch_by!(impl<D: NormalDistribution + Clone>
     for RoughDielectric<D> where f32, by_masking, run, Plain);
 

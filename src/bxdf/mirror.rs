@@ -41,7 +41,7 @@ impl<F: Fresnel> Mirror<F> {
     }
 
     /// `sample` (its lobes are delta lobes: `eval` and `pdf` are zero).
-    #[inline]
+    #[inline(always)]
     fn sample_delta(&self, wo: Vec3, _uc: f32) -> Option<BxdfSample<F::Spectrum>> {
         if !(wo.z > 0.0) {
             return None;

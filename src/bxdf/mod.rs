@@ -220,6 +220,7 @@ pub use compensated_dielectric::CompensatedDielectric;
 pub use diffuse_transmission::DiffuseTransmission;
 pub use disney_diffuse::DisneyDiffuse;
 pub use eon::EnergyPreservingOrenNayar;
+pub(crate) use eon::FixedForm;
 pub use glazed::Glazed;
 pub use lambert::Lambert;
 pub use layer_interface::LayerInterface;

@@ -48,7 +48,7 @@ impl ThinDielectric {
     }
 
     /// `sample` (its lobes are delta lobes: `eval` and `pdf` are zero).
-    #[inline]
+    #[inline(always)]
     fn sample_delta(&self, wo: Vec3, uc: f32) -> Option<BxdfSample<f32>> {
         if wo.z == 0.0 {
             return None;
