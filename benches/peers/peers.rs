@@ -6,7 +6,7 @@
 //! dielectric (η 1.5, the sides mixed as in the shading benchmarks), and the
 //! energy-compensated GGX gold conductor and rough glass (Kulla & Conty's lobe on top), the
 //! GGX plastic, plain and with the compensated coat, the energy-preserving Oren-Nayar model
-//! (EON, its albedo fitted) and the smooth glass (the sides mixed).
+//! (EON, its albedo fitted), the glazed diffuse model and the smooth glass (the sides mixed).
 //!
 //! Last, the ceiling of batching for work bound by the divider: one square root and one
 //! division per element, scalar (measured as lobe's scalar calls are) against the same loop
@@ -31,7 +31,7 @@ use interleave::{Kernel, ratio, rounds, spread};
 use lanes::PerLane;
 use lobe::batch::{Batch, Lanes, SampleOut, Vec2s, Vec3s, Vec3sMut};
 use lobe::bxdf::{Bxdf, Lambert, Lobes, Microfacet, Plastic, Prepare, RoughDielectric};
-use lobe::bxdf::{EnergyPreservingOrenNayar, SmoothDielectric};
+use lobe::bxdf::{EnergyPreservingOrenNayar, Glazed, SmoothDielectric};
 use lobe::fresnel::{Conductor as ExactConductor, Fresnel, Schlick};
 use lobe::microfacet::{Ggx, Masking};
 use lobe::{Alpha, Eta, Vec3};
@@ -396,8 +396,8 @@ fn main() {
     }
 
     // Pairs of (lobe scalar, lobe batched) for work the peer has no model of: the rough
-    // dielectric (the sides mixed), the compensated models, the plastics, EON, the smooth
-    // glass, and the divider alone.
+    // dielectric (the sides mixed), the compensated models, the plastics, EON, the glazed
+    // model, the smooth glass, and the divider alone.
     let glass = RoughDielectric::new(
         Ggx::isotropic(Alpha::new(ALPHA).unwrap()),
         Eta::new(1.5).unwrap(),
@@ -452,6 +452,8 @@ fn main() {
     ));
     let eon = EnergyPreservingOrenNayar::new(Vec3::new(0.8, 0.6, 0.4), 0.5).unwrap();
     pairs.extend(scalar_and_batched("EON RGB", &eon, &inputs, &soa));
+    let glazed = Glazed::new(Vec3::new(0.8, 0.6, 0.4), Eta::new(1.5).unwrap()).unwrap();
+    pairs.extend(scalar_and_batched("glazed RGB η 1.5", &glazed, &inputs, &soa));
     let smooth = SmoothDielectric::new(Eta::new(1.5).unwrap());
     let name = "smooth glass η 1.5, sides mixed";
     pairs.extend(scalar_and_batched(name, &smooth, &mixed, &mixed_soa));

@@ -108,7 +108,11 @@
 //! every lane forms both directions, the configuration and the value, and an unusable lane discards
 //! them (the same numbers). With its `f64` half vector (for refraction `wo + η' wi` cancels), the
 //! branches had tipped the balance. AVX-512 vectorised all of them before the table passes; the
-//! passes are not measured there.
+//! passes are not measured there. Three more ran slower batched than scalar under AVX2 (0.6–0.7×,
+//! the README has the figures): EON, whose albedo's form (exact or fitted) its lanes read (now
+//! fixed outside the loop, as the masking terms are), and the smooth glass and the glazed model,
+//! whose `sample` a loop called once per lane (now inlined always; the glazed model's also without
+//! branches).
 //!
 //! **Batch size.** Keep a batch within the L2 cache: an RGB `eval`'s slices take 36 bytes per
 //! lane, so 2¹⁵ lanes are 1.1 MiB (the machine measured here has a 2 MiB L2). The outputs are

@@ -1,7 +1,7 @@
 //! [The handouts'](crate::handouts#seed-003) glazed material: a diffuse base under a smooth dielectric
 //! coat.
 
-use super::{At, BxdfSample, Lobes, Prepare, both_above, delta_scale, usable_pdf};
+use super::{At, BxdfSample, Lobes, Prepare, both_above, usable_pdf};
 use crate::fresnel::{Dielectric, FresnelAverage, dielectric};
 use crate::param::{Eta, ParamError, unit_interval};
 use crate::sampling::{cosine_hemisphere, cosine_hemisphere_pdf};
@@ -117,33 +117,32 @@ impl<S: Spectrum> Prepare for Glazed<S> {
         self.reflectance * (t * self.diffuse_scale)
     }
 
+    /// Both lobes' directions are formed and the one `uc` picks is kept, a refused sample
+    /// refused at the end: no branch for a batched loop to turn into selects. (Under AVX2 its
+    /// batched `sample` ran at 1.2× the scalar speed with early returns; measured
+    /// 2026-11-29.)
+    #[inline(always)]
     fn sample_prepared(&self, at: &Self::Prepared, u: Vec2, uc: f32) -> Option<BxdfSample<S>> {
         let wo = at.wo;
-        if !(wo.z > 0.0) {
-            return None;
-        }
         let (p_mirror, f) = at.state;
-        if crate::sampling::picks(uc, p_mirror) {
-            let wi = Vec3::new(-wo.x, -wo.y, wo.z);
-            return Some(BxdfSample::new(
-                wi,
-                S::splat(f * delta_scale(wi)?),
-                p_mirror,
-                Lobes::SPECULAR_REFLECTION,
-            ));
-        }
-        let wi = cosine_hemisphere(u);
-        let pdf = (1.0 - p_mirror) * cosine_hemisphere_pdf(wi.z);
-        if !usable_pdf(pdf) {
-            return None;
-        }
-        let t = (1.0 - f) * (1.0 - dielectric(wi.z, self.eta));
-        Some(BxdfSample::new(
-            wi,
-            self.reflectance * (t * self.diffuse_scale),
-            pdf,
-            Lobes::DIFFUSE_REFLECTION,
-        ))
+        let mirror = crate::sampling::picks(uc, p_mirror);
+        let reflected = Vec3::new(-wo.x, -wo.y, wo.z);
+        let diffuse = cosine_hemisphere(u);
+        let pdf_diffuse = (1.0 - p_mirror) * cosine_hemisphere_pdf(diffuse.z);
+        let t = (1.0 - f) * (1.0 - dielectric(diffuse.z, self.eta));
+        let (wi, value, pdf, lobe) = if mirror {
+            // `f / |cos θi|`: `delta_scale`'s value where it has one (checked below).
+            let value = S::splat(f * (1.0 / reflected.z.abs()));
+            (reflected, value, p_mirror, Lobes::SPECULAR_REFLECTION)
+        } else {
+            let value = self.reflectance * (t * self.diffuse_scale);
+            (diffuse, value, pdf_diffuse, Lobes::DIFFUSE_REFLECTION)
+        };
+        // `&` and `|`, not `&&` and `||`: no branch.
+        let usable = (mirror & (reflected.z.abs() >= f32::MIN_POSITIVE))
+            | (!mirror & usable_pdf(pdf_diffuse));
+        let kept = (wo.z > 0.0) & usable;
+        kept.then(|| BxdfSample::new(wi, value, pdf, lobe))
     }
 
     #[inline]
