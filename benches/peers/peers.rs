@@ -453,7 +453,8 @@ fn main() {
     let eon = EnergyPreservingOrenNayar::new(Vec3::new(0.8, 0.6, 0.4), 0.5).unwrap();
     pairs.extend(scalar_and_batched("EON RGB", &eon, &inputs, &soa));
     let glazed = Glazed::new(Vec3::new(0.8, 0.6, 0.4), Eta::new(1.5).unwrap()).unwrap();
-    pairs.extend(scalar_and_batched("glazed RGB η 1.5", &glazed, &inputs, &soa));
+    let name = "glazed RGB η 1.5";
+    pairs.extend(scalar_and_batched(name, &glazed, &inputs, &soa));
     let smooth = SmoothDielectric::new(Eta::new(1.5).unwrap());
     let name = "smooth glass η 1.5, sides mixed";
     pairs.extend(scalar_and_batched(name, &smooth, &mixed, &mixed_soa));

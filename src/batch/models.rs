@@ -129,7 +129,7 @@ macro_rules! by_masking {
 }
 
 /// `Batch` for a model whose loops fix something outside the loop: `eval` and `sample` chosen
-/// by `$by` (`by_masking`, `by_compensation`, `by_coat`) and run by `$run`, `pdf` run by
+/// by `$by` (`by_masking`, `by_compensation`, `by_coat`, `by_form`) and run by `$run`, `pdf` run by
 /// `$run` with the lane operation `$pdf` (the density depends on neither). `run` for a model
 /// that reads no table (`$pdf` = `Plain`, as `Batch`'s own `pdf_batch`); `chunked`, a chunk
 /// of lanes at a time (the module `tabulated`; `$pdf` = `()`), for one that reads tables at
@@ -215,7 +215,7 @@ batch_by!(impl<S: Spectrum + Lanes> for EnergyPreservingOrenNayar<S> where S, by
 batch_by!(impl<D: NormalDistribution + Clone>
     for RoughDielectric<D> where f32, by_masking, run, Plain);
 
-/// Chooses a compensated model's loop, run in chunks, for its masking term and compensation.
+/// Chooses a compensated model's loop, run by `$run`, for its masking term and compensation.
 macro_rules! by_compensation {
     ($run:ident, $m:expr, $kernel:ident($($arg:expr),*)) => {{
         use Compensation::{KullaConty, Turquin};
@@ -402,9 +402,9 @@ impl<D: NormalDistribution> FixedCoat for CompensatedMicrofacet<D, Dielectric> {
     }
 }
 
-/// Chooses a plastic's loop: with the coat fixed ([`FixedCoat`]), run by `$run`, or the plain
-/// loop for another coat. Its `eval` and `sample` (the density does not depend on the masking
-/// term).
+/// Chooses a plastic's `eval` or `sample` loop: with the coat fixed ([`FixedCoat`]), run by
+/// `$run`, or the plain loop for another coat. (Its density does not depend on the masking
+/// term.)
 macro_rules! by_coat {
     ($run:ident, $m:expr, $kernel:ident($($arg:expr),*)) => {
         if $m.coat().fixed() {

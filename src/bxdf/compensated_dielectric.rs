@@ -308,8 +308,7 @@ impl<D: NormalDistribution> CompensatedDielectric<D> {
     }
 
     /// The sample of [`sample_prepared`](Prepare::sample_prepared) with the interface's value
-    /// alone in
-    /// place of the sample's value (the mixture's density is the sample's): what
+    /// alone in place of the sample's value (the mixture's density is the sample's): what
     /// [`finish`](Self::finish) completes, given `E` at the sampled direction. A batched loop
     /// (`LANES`) draws with [`draw_lane`](Self::draw_lane), the scalar path one lobe only.
     #[inline(always)]
@@ -471,6 +470,7 @@ impl<D: NormalDistribution> Prepare for CompensatedDielectric<D> {
     #[inline(always)]
     fn sample_prepared(&self, at: &Self::Prepared, u: Vec2, uc: f32) -> Option<BxdfSample<f32>> {
         let wo = at.inner.wo;
+        // `sample_unfinished` refuses it too, but only after drawing.
         if wo.z == 0.0 {
             return None;
         }

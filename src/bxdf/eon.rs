@@ -200,8 +200,9 @@ impl<S: Spectrum> EnergyPreservingOrenNayar<S> {
         (C1 - g_over_pi).max(0.0)
     }
 
-    /// [`CosineSampled::value`] with `G` exact (`EXACT`) or the paper's fit, whichever the
-    /// model holds: a batched loop fixes the form outside the loop ([`FixedForm`]); read per
+    /// [`CosineSampled::value`] with `G` exact (`EXACT`) or the paper's fit, whatever the
+    /// model holds (its callers pass [`is_exact`](Self::is_exact)'s answer): a batched loop
+    /// fixes the form outside the loop ([`FixedForm`]); read per
     /// lane, the choice kept the loops from vectorising under AVX2 (`eval` ran at 0.6× the
     /// scalar speed; measured 2026-11-29).
     #[inline(always)]

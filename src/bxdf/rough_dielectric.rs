@@ -365,7 +365,8 @@ impl<D: NormalDistribution> RoughDielectric<D> {
         }
     }
 
-    /// The direction a sample draws (not for an index-matched interface): a visible normal
+    /// The direction a sample draws (for an index-matched interface, a stand-in to discard:
+    /// its sample is the delta of `−wo`, [`pass_through`](Self::pass_through)): a visible normal
     /// `m`, then reflection about it or refraction through it as `uc` picks, with probability
     /// `F(wo·m)`. Both directions are formed and one kept, without a branch.
     #[inline(always)]

@@ -30,6 +30,7 @@ impl DielectricAlbedo {
     /// the numbers are [`row`](Self::row)'s and a batched loop reads no table.
     #[inline(always)]
     pub(crate) fn e_chunk(&self, z: &[f32], e: &mut [(f32, f32); CHUNK]) {
+        debug_assert!(z.len() <= CHUNK, "{} lanes for a chunk of {CHUNK}", z.len());
         let n = z.len().min(CHUNK);
         let mut mu = [0.0; CHUNK];
         for (mu, &z) in mu.iter_mut().zip(z) {
