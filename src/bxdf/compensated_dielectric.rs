@@ -220,9 +220,9 @@ impl<D: NormalDistribution> CompensatedDielectric<D> {
     }
 
     /// The lobes of the side of a direction whose cosine is `z` (the outside's for `z > 0`),
-    /// field by field: selects of values in a batched loop. (A select of the two sides
-    /// themselves is one of addresses, and the reads from it gathers, which kept LLVM from
-    /// vectorising the loops under AVX2.)
+    /// picked field by field: selects of values in a batched loop. (Written so while the
+    /// glass's loops were made to vectorise; what kept them scalar was elsewhere, and whether
+    /// a select of the whole `Side` would vectorise as well was not measured.)
     #[inline(always)]
     fn side_of(&self, z: f32) -> Side {
         let outside = z > 0.0;
