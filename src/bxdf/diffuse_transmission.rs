@@ -93,15 +93,18 @@ impl<S: Spectrum> DiffuseTransmission<S> {
     #[inline(always)]
     fn eval_pdf(&self, wo: Vec3, wi: Vec3) -> (S, f32) {
         let (a, b) = (wo.z, wi.z);
-        if a == 0.0 || b == 0.0 {
+        // `|`, not `||`, and the side's coefficients selected before they are scaled: no
+        // branch the batched loop would have to keep (`lobe::batch`).
+        if (a == 0.0) | (b == 0.0) {
             return (S::zero(), 0.0);
         }
         let cos = cosine_hemisphere_pdf(b.abs());
-        if (a > 0.0) == (b > 0.0) {
-            (self.reflectance * FRAC_1_PI, self.p_reflect * cos)
+        let (f, p) = if (a > 0.0) == (b > 0.0) {
+            (self.reflectance, self.p_reflect)
         } else {
-            (self.transmittance * FRAC_1_PI, (1.0 - self.p_reflect) * cos)
-        }
+            (self.transmittance, 1.0 - self.p_reflect)
+        };
+        (f * FRAC_1_PI, p * cos)
     }
 }
 
@@ -132,15 +135,11 @@ impl<S: Spectrum> Prepare for DiffuseTransmission<S> {
 
     #[inline(always)]
     fn sample_prepared(&self, &wo: &Vec3, u: Vec2, uc: f32) -> Option<BxdfSample<S>> {
-        if wo.z == 0.0 {
-            return None;
-        }
+        // A tangent `wo` has no sample: `eval_pdf` gives it the density 0, refused below.
         let reflect = picks(uc, self.p_reflect);
         let mut wi = cosine_hemisphere(u);
         // Reflection stays on wo's side, transmission goes to the other.
-        if (wo.z < 0.0) == reflect {
-            wi.z = -wi.z;
-        }
+        wi.z = if (wo.z < 0.0) == reflect { -wi.z } else { wi.z };
         let (f, pdf) = self.eval_pdf(wo, wi);
         if !usable_pdf(pdf) {
             return None;
