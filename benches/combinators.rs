@@ -25,7 +25,7 @@ mod inputs;
 mod passes;
 
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
-use inputs::{Inputs, N, inputs, two_sided};
+use inputs::{inputs, mirrored, two_sided};
 use lobe::bxdf::{
     CoatedConductor, CoatedDiffuse, DiffuseTransmission, Lambert, Layered, Microfacet, Mirror, Mix,
     Sheen, SmoothDielectric, TwoSided,
@@ -35,17 +35,6 @@ use lobe::microfacet::{Ggx, Masking};
 use lobe::{Alpha, Eta, Vec3, metals};
 use passes::{group, model};
 use std::hint::black_box;
-
-/// The inputs seen from below for `k mod 4 ≥ 2` (both directions mirrored).
-fn mirrored(i: &Inputs) -> Inputs {
-    let flip = |w: Vec3, below: bool| if below { Vec3::new(w.x, w.y, -w.z) } else { w };
-    Inputs {
-        wo: (0..N).map(|k| flip(i.wo[k], k % 4 >= 2)).collect(),
-        wi: (0..N).map(|k| flip(i.wi[k], k % 4 >= 2)).collect(),
-        u: i.u.clone(),
-        uc: i.uc.clone(),
-    }
-}
 
 fn ggx(a: f32) -> Ggx {
     Ggx::isotropic(Alpha::new(a).unwrap())

@@ -530,6 +530,74 @@ fn the_combinators_and_layered_models_equal_the_scalar_path() {
     );
 }
 
+/// The models built from others (`Mix`, `TwoSided`, `Mono`) pass chunks of lanes to their
+/// parts' own batched calls (`src/batch/parts.rs`): parts with loops of their own (a masking
+/// term fixed outside the loop, tables looked up a chunk at a time), nested blends, a blend
+/// that samples through its stochastic part, and a transmitting part. `N` lanes span several
+/// chunks and end in a partial one.
+#[test]
+fn the_models_built_from_others_equal_the_scalar_path_through_their_parts() {
+    use lobe::bxdf::{CoatedDiffuse, CompensatedDielectric, Mix, Mono, TwoSided};
+    let rgb = Vec3::new(0.8, 0.5, 0.2);
+    let glass = Eta::new(1.5).unwrap();
+    let lambert = Lambert::new(rgb).unwrap();
+    let conductor = |masking| {
+        Microfacet::new(
+            Beckmann::isotropic(a(0.4)),
+            masking,
+            Conductor {
+                ior: common::gold(),
+            },
+        )
+    };
+    for masking in [
+        Masking::HeightCorrelated,
+        Masking::Separable,
+        Masking::VCavity,
+    ] {
+        let gold = conductor(masking);
+        let name = format!("Mix(Lambert, Beckmann gold, {masking:?})");
+        assert_both_lobes(&name, &check(&name, &Mix::new(lambert, gold, 0.5).unwrap()));
+        check(
+            &format!("TwoSided(Beckmann gold, {masking:?})"),
+            &TwoSided::new(gold),
+        );
+    }
+    let gold = conductor(Masking::HeightCorrelated);
+    let mirror = Mirror::new(Schlick::new(Vec3::new(0.9, 0.7, 0.5)).unwrap());
+    let nested = Mix::new(Mix::new(lambert, gold, 0.3).unwrap(), mirror, 0.2).unwrap();
+    let lobes = check("Mix(Mix(Lambert, Beckmann gold), Mirror)", &nested);
+    assert_specular_and_not("Mix(Mix(Lambert, Beckmann gold), Mirror)", &lobes);
+    check(
+        "TwoSided(Mix(Lambert, Mirror))",
+        &TwoSided::new(Mix::new(lambert, mirror, 0.4).unwrap()),
+    );
+    let coated = CoatedDiffuse::coated_diffuse(rgb, Ggx::isotropic(a(0.3)), glass).unwrap();
+    check_stochastic(
+        "Mix(Lambert, CoatedDiffuse)",
+        &Mix::new(lambert, coated, 0.5).unwrap(),
+    );
+    let rough = RoughDielectric::new(Ggx::isotropic(a(0.3)), glass);
+    let lobes = check("Mono(rough glass)", &Mono::<_, Vec3>::new(rough));
+    assert_sampled(
+        "Mono(rough glass)",
+        &lobes,
+        &[Lobes::GLOSSY_REFLECTION, Lobes::GLOSSY_TRANSMISSION],
+    );
+    let compensated = CompensatedDielectric::new(
+        RoughDielectric::new(Ggx::isotropic(a(0.5)), glass).with_mode(TransportMode::Importance),
+    )
+    .unwrap();
+    check(
+        "Mono(compensated glass)",
+        &Mono::<_, Vec3>::new(compensated),
+    );
+    check(
+        "Mono(smooth glass)",
+        &Mono::<_, Vec3>::new(SmoothDielectric::new(glass)),
+    );
+}
+
 /// The energy-compensated models: Kulla & Conty's lobe on a conductor and on a white
 /// microfacet, Turquin's scaling, the compensated glass in both transport modes (the
 /// compensated microfacet model and glass take one loop per masking term, as the plain

@@ -513,8 +513,9 @@ fn composed_models_do_not_allocate() {
     );
 }
 
-/// The batched calls (`lobe::batch`) of the three models the issue names, RGB and mono,
-/// including their run-time dispatch to the widest SIMD the CPU has: no allocation either.
+/// The batched calls (`lobe::batch`) of the three models the issue names, RGB and mono, and
+/// of the models built from others, including their run-time dispatch to the widest SIMD the
+/// CPU has: no allocation either.
 #[test]
 fn batched_calls_do_not_allocate() {
     use lobe::batch::{Batch, SampleOut, Vec2s, Vec3s};
@@ -577,6 +578,13 @@ fn batched_calls_do_not_allocate() {
         rgb_calls(&conductor, wo, wi, u, &i.uc, &mut out, &mut lobes);
         rgb_calls(&schlick, wo, wi, u, &i.uc, &mut out, &mut lobes);
         rgb_calls(&lambert, wo, wi, u, &i.uc, &mut out, &mut lobes);
+        // The models built from others, whose parts' calls take chunks in stack space.
+        let mix = lobe::bxdf::Mix::new(lambert, conductor, 0.5).unwrap();
+        rgb_calls(&mix, wo, wi, u, &i.uc, &mut out, &mut lobes);
+        let two_sided = lobe::bxdf::TwoSided::new(conductor);
+        rgb_calls(&two_sided, wo, wi, u, &i.uc, &mut out, &mut lobes);
+        let mono = lobe::bxdf::Mono::<_, Vec3>::new(glass);
+        rgb_calls(&mono, wo, wi, u, &i.uc, &mut out, &mut lobes);
         let [a, b, c, d, e, f, g, h] = &mut out[..] else {
             unreachable!()
         };

@@ -55,3 +55,16 @@ pub fn two_sided(i: &Inputs) -> Inputs {
         uc: i.uc.clone(),
     }
 }
+
+/// The inputs seen from below for `k mod 4 ≥ 2` (both directions mirrored), for
+/// `TwoSided`.
+#[allow(dead_code)] // Not every bench that includes this file times a two-sided model.
+pub fn mirrored(i: &Inputs) -> Inputs {
+    let flip = |w: Vec3, below: bool| if below { Vec3::new(w.x, w.y, -w.z) } else { w };
+    Inputs {
+        wo: (0..N).map(|k| flip(i.wo[k], k % 4 >= 2)).collect(),
+        wi: (0..N).map(|k| flip(i.wi[k], k % 4 >= 2)).collect(),
+        u: i.u.clone(),
+        uc: i.uc.clone(),
+    }
+}

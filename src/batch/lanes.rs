@@ -32,6 +32,16 @@ impl Vec3s<'_> {
     pub fn get(&self, k: usize) -> Vec3 {
         Vec3::new(self.x[k], self.y[k], self.z[k])
     }
+
+    /// Lanes `start..end`.
+    #[inline(always)]
+    pub(crate) fn range(&self, start: usize, end: usize) -> Self {
+        Self {
+            x: &self.x[start..end],
+            y: &self.y[start..end],
+            z: &self.z[start..end],
+        }
+    }
 }
 
 /// Points of the unit square (a sampler's random numbers) as one slice per coordinate.
@@ -58,6 +68,15 @@ impl Vec2s<'_> {
     #[must_use]
     pub fn get(&self, k: usize) -> Vec2 {
         Vec2::new(self.x[k], self.y[k])
+    }
+
+    /// Lanes `start..end`.
+    #[inline(always)]
+    pub(crate) fn range(&self, start: usize, end: usize) -> Self {
+        Self {
+            x: &self.x[start..end],
+            y: &self.y[start..end],
+        }
     }
 }
 
@@ -89,6 +108,16 @@ impl<'a> Vec3sMut<'a> {
             x: &mut self.x[..n],
             y: &mut self.y[..n],
             z: &mut self.z[..n],
+        }
+    }
+
+    /// Lanes `start..end`, reborrowed.
+    #[inline(always)]
+    pub(crate) fn range(&mut self, start: usize, end: usize) -> Vec3sMut<'_> {
+        Vec3sMut {
+            x: &mut self.x[start..end],
+            y: &mut self.y[start..end],
+            z: &mut self.z[start..end],
         }
     }
 
@@ -133,7 +162,27 @@ pub trait Lanes: Spectrum {
     /// Writes `v` to lane `k` of `out`.
     #[doc(hidden)]
     fn put(out: &mut Self::Mut<'_>, k: usize, v: Self);
+
+    /// Lanes `start..end` of `out`, reborrowed.
+    #[doc(hidden)]
+    fn lanes_of<'b>(out: &'b mut Self::Mut<'_>, start: usize, end: usize) -> Self::Mut<'b>;
+
+    /// The first `n` lanes of a chunk's stack space, one row per channel.
+    #[doc(hidden)]
+    fn rows_mut(rows: &mut Rows, n: usize) -> Self::Mut<'_>;
+
+    /// Lane `k` of a chunk's stack space.
+    #[doc(hidden)]
+    fn rows_get(rows: &Rows, k: usize) -> Self;
 }
+
+/// How many lanes the models built from other models (`Mix`, `TwoSided`, `Mono`) pass to
+/// their parts' batched calls at a time, through stack space of this many lanes.
+pub(crate) const PART: usize = 256;
+
+/// A chunk's stack space for the values of a spectrum of up to four channels.
+#[doc(hidden)]
+pub type Rows = [[f32; PART]; 4];
 
 impl Lanes for f32 {
     type Mut<'a> = &'a mut [f32];
@@ -151,6 +200,21 @@ impl Lanes for f32 {
     #[inline(always)]
     fn put(out: &mut &mut [f32], k: usize, v: f32) {
         out[k] = v;
+    }
+
+    #[inline(always)]
+    fn lanes_of<'b>(out: &'b mut &mut [f32], start: usize, end: usize) -> &'b mut [f32] {
+        &mut out[start..end]
+    }
+
+    #[inline(always)]
+    fn rows_mut(rows: &mut Rows, n: usize) -> &mut [f32] {
+        &mut rows[0][..n]
+    }
+
+    #[inline(always)]
+    fn rows_get(rows: &Rows, k: usize) -> f32 {
+        rows[0][k]
     }
 }
 
@@ -170,6 +234,26 @@ impl Lanes for Vec3 {
     #[inline(always)]
     fn put(out: &mut Vec3sMut<'_>, k: usize, v: Vec3) {
         out.put(k, v);
+    }
+
+    #[inline(always)]
+    fn lanes_of<'b>(out: &'b mut Vec3sMut<'_>, start: usize, end: usize) -> Vec3sMut<'b> {
+        out.range(start, end)
+    }
+
+    #[inline(always)]
+    fn rows_mut(rows: &mut Rows, n: usize) -> Vec3sMut<'_> {
+        let [x, y, z, _] = rows;
+        Vec3sMut {
+            x: &mut x[..n],
+            y: &mut y[..n],
+            z: &mut z[..n],
+        }
+    }
+
+    #[inline(always)]
+    fn rows_get(rows: &Rows, k: usize) -> Vec3 {
+        Vec3::new(rows[0][k], rows[1][k], rows[2][k])
     }
 }
 
@@ -197,5 +281,31 @@ impl Lanes for Vec4 {
         out.y[k] = v.y;
         out.z[k] = v.z;
         out.w[k] = v.w;
+    }
+
+    #[inline(always)]
+    fn lanes_of<'b>(out: &'b mut Vec4sMut<'_>, start: usize, end: usize) -> Vec4sMut<'b> {
+        Vec4sMut {
+            x: &mut out.x[start..end],
+            y: &mut out.y[start..end],
+            z: &mut out.z[start..end],
+            w: &mut out.w[start..end],
+        }
+    }
+
+    #[inline(always)]
+    fn rows_mut(rows: &mut Rows, n: usize) -> Vec4sMut<'_> {
+        let [x, y, z, w] = rows;
+        Vec4sMut {
+            x: &mut x[..n],
+            y: &mut y[..n],
+            z: &mut z[..n],
+            w: &mut w[..n],
+        }
+    }
+
+    #[inline(always)]
+    fn rows_get(rows: &Rows, k: usize) -> Vec4 {
+        Vec4::new(rows[0][k], rows[1][k], rows[2][k], rows[3][k])
     }
 }

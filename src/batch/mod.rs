@@ -154,6 +154,7 @@ mod isa;
 mod kernel;
 mod lanes;
 mod models;
+mod parts;
 mod tabulated;
 
 pub use isa::{InstructionSet, instruction_set};

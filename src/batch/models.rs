@@ -3,10 +3,10 @@
 use super::Batch;
 use crate::bxdf::{
     BlinnPhong, CompensatedDielectric, CompensatedMicrofacet, DisneyDiffuse,
-    EnergyPreservingOrenNayar, Glazed, Lambert, Microfacet, Mirror, Mono, OrenNayar, Phong,
-    Plastic, RoughDielectric, SmoothDielectric, ThinDielectric,
+    EnergyPreservingOrenNayar, Glazed, Lambert, Microfacet, Mirror, OrenNayar, Phong, Plastic,
+    RoughDielectric, SmoothDielectric, ThinDielectric,
 };
-use crate::bxdf::{Bxdf, DiffuseTransmission, LayerInterface, Layered, Mix, Sheen, TwoSided};
+use crate::bxdf::{Bxdf, DiffuseTransmission, LayerInterface, Layered, Sheen};
 use crate::fresnel::{Dielectric, Fresnel, FresnelAverage};
 use crate::microfacet::NormalDistribution;
 use crate::spectrum::Spectrum;
@@ -31,16 +31,7 @@ impl<S: Spectrum + Lanes> Batch for BlinnPhong<S> {}
 impl<S: Spectrum + Lanes> Batch for Glazed<S> {}
 impl<F: Fresnel> Batch for Mirror<F> where F::Spectrum: Lanes {}
 impl Batch for SmoothDielectric {}
-impl<B: Prepare<Spectrum = f32> + Clone, S: Spectrum + Lanes> Batch for Mono<B, S> {}
 impl Batch for ThinDielectric {}
-impl<A, B> Batch for Mix<A, B>
-where
-    A: Prepare + Clone,
-    B: Prepare<Spectrum = A::Spectrum> + Clone,
-    A::Spectrum: Lanes,
-{
-}
-impl<B: Prepare + Clone> Batch for TwoSided<B> where B::Spectrum: Lanes {}
 impl<S: Spectrum + Lanes> Batch for DiffuseTransmission<S> {}
 impl<S: Spectrum + Lanes> Batch for Sheen<S> {}
 impl<T: LayerInterface + Clone, B: Bxdf + Clone> Batch for Layered<T, B> where B::Spectrum: Lanes {}

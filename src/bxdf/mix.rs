@@ -84,13 +84,49 @@ impl<A: Prepare, B: Prepare<Spectrum = A::Spectrum>> Mix<A, B> {
 
     /// The blend of two values.
     #[inline(always)]
-    fn blend(&self, fa: A::Spectrum, fb: A::Spectrum) -> A::Spectrum {
+    pub(crate) fn blend(&self, fa: A::Spectrum, fb: A::Spectrum) -> A::Spectrum {
         fa * (1.0 - self.weight) + fb * self.weight
+    }
+
+    /// The blend's sample from a part's sample `s`, which `A` drew (`choose_a`) or `B`,
+    /// chosen with probability `p`, for parts that are not stochastic (or a specular `s`).
+    /// `other` gives the other part's value and density at `s.wi`, asked for a sample that is
+    /// not specular only; the sampled part's are its sample's (the numbers its `eval` and
+    /// `pdf` give). Shared by the scalar sample and the batched one (`lobe::batch`).
+    #[inline(always)]
+    pub(crate) fn finish(
+        &self,
+        s: BxdfSample<A::Spectrum>,
+        p: f32,
+        choose_a: bool,
+        other: impl FnOnce() -> (A::Spectrum, f32),
+    ) -> Option<BxdfSample<A::Spectrum>> {
+        if s.is_specular() {
+            let pdf = p * s.pdf;
+            if !usable_pdf(pdf) {
+                return None;
+            }
+            return Some(BxdfSample {
+                f: s.f * p,
+                pdf,
+                ..s
+            });
+        }
+        let (fo, po) = other();
+        let (f, pdf) = if choose_a {
+            (self.blend(s.f, fo), self.blend_pdf(s.pdf, po))
+        } else {
+            (self.blend(fo, s.f), self.blend_pdf(po, s.pdf))
+        };
+        if !usable_pdf(pdf) {
+            return None;
+        }
+        Some(BxdfSample { f, pdf, ..s })
     }
 
     /// The blend of two densities.
     #[inline(always)]
-    fn blend_pdf(&self, pa: f32, pb: f32) -> f32 {
+    pub(crate) fn blend_pdf(&self, pa: f32, pb: f32) -> f32 {
         (1.0 - self.weight) * pa + self.weight * pb
     }
 }
@@ -146,18 +182,7 @@ impl<A: Prepare, B: Prepare<Spectrum = A::Spectrum>> Prepare for Mix<A, B> {
             let uc = reuse_uniform(uc, wa, self.weight);
             (self.b.sample_prepared(&at.state.1, u, uc)?, self.weight)
         };
-        if s.is_specular() {
-            let pdf = p * s.pdf;
-            if !usable_pdf(pdf) {
-                return None;
-            }
-            return Some(BxdfSample {
-                f: s.f * p,
-                pdf,
-                ..s
-            });
-        }
-        if self.stochastic() {
+        if self.stochastic() && !s.is_specular() {
             // The chosen part's weight, an estimate of the mixture's density at the direction
             // (the chosen part's own estimate, the other's `pdf`), and the value that keeps the
             // weight.
@@ -172,19 +197,13 @@ impl<A: Prepare, B: Prepare<Spectrum = A::Spectrum>> Prepare for Mix<A, B> {
             let f = s.weight() * (pdf / s.wi.z.abs());
             return f.is_finite().then_some(BxdfSample { f, pdf, ..s });
         }
-        // The other model's value and density at the sampled direction; the sampled model's
-        // from its sample (the numbers its eval and pdf give).
-        let (f, pdf) = if choose_a {
-            let (fb, pb) = self.b.eval_pdf_prepared(&at.state.1, s.wi);
-            (self.blend(s.f, fb), self.blend_pdf(s.pdf, pb))
-        } else {
-            let (fa, pa) = self.a.eval_pdf_prepared(&at.state.0, s.wi);
-            (self.blend(fa, s.f), self.blend_pdf(pa, s.pdf))
-        };
-        if !usable_pdf(pdf) {
-            return None;
-        }
-        Some(BxdfSample { f, pdf, ..s })
+        self.finish(s, p, choose_a, || {
+            if choose_a {
+                self.b.eval_pdf_prepared(&at.state.1, s.wi)
+            } else {
+                self.a.eval_pdf_prepared(&at.state.0, s.wi)
+            }
+        })
     }
 
     #[inline]

@@ -1,0 +1,433 @@
+//! The batched calls of the models built from other models ([`Mix`], [`TwoSided`], [`Mono`]):
+//! a chunk of [`PART`] lanes at a time through their parts' own batched calls, with the
+//! parts' inputs and outputs in stack space.
+//!
+//! A part's own batched call runs the loop written for it: a microfacet model's masking term
+//! fixed outside the loop, a compensated model's tables looked up a chunk at a time. The
+//! parts' prepared calls inlined into one loop of the whole model (what `Batch`'s provided
+//! methods would compile) keep those choices inside the loop, and the loop stays scalar. Each
+//! lane gets the scalar call's numbers: a part's batched call gives its scalar call's, and the
+//! combination per lane is the scalar model's own (`Mix::finish` for a blend's sample).
+//!
+//! A stochastic blend (a layered part) samples through the provided loop instead: its sample
+//! carries the chosen part's random-walk estimates, which are not its `eval` and `pdf`.
+
+use super::kernel::Plain;
+use super::lanes::{PART, Rows};
+use super::{Batch, Lanes, LengthError, SampleOut, Vec2s, Vec3s, Vec3sMut};
+use super::{run, same_length, sample_kernel};
+use crate::bxdf::{BxdfSample, Lobes, Mix, Mono, Prepare, TwoSided};
+use crate::sampling::{picks, reuse_uniform};
+use crate::spectrum::Spectrum;
+use glam::Vec3;
+
+/// How many lanes a call passes to its parts at a time where it needs no stack space for
+/// values of the spectrum ([`Rows`] holds [`PART`] lanes): a part's call has a fixed cost
+/// (its loop's set-up, a remainder of lanes that runs outside the vector loop) that a longer
+/// chunk spreads thinner. `TwoSided(GGX gold)`'s `pdf` costs 1.3× more per lane at 256 than
+/// at 1,024 in a probe (AVX2).
+const WIDE: usize = 1024;
+
+/// The chunks `start..end` of `n` lanes, `L` at a time.
+#[inline(always)]
+fn chunks<const L: usize>(n: usize) -> impl Iterator<Item = (usize, usize)> {
+    (0..n)
+        .step_by(L)
+        .map(move |start| (start, n.min(start + L)))
+}
+
+/// Stack space for a chunk of `L` 3-vectors.
+type Rows3<const L: usize = PART> = [[f32; L]; 3];
+
+/// The first `n` lanes of `rows` as a [`Vec3s`].
+#[inline(always)]
+fn view<const L: usize>(rows: &Rows3<L>, n: usize) -> Vec3s<'_> {
+    Vec3s {
+        x: &rows[0][..n],
+        y: &rows[1][..n],
+        z: &rows[2][..n],
+    }
+}
+
+/// The first `n` lanes of `rows` as a [`Vec3sMut`].
+#[inline(always)]
+fn view_mut<const L: usize>(rows: &mut Rows3<L>, n: usize) -> Vec3sMut<'_> {
+    let [x, y, z] = rows;
+    Vec3sMut {
+        x: &mut x[..n],
+        y: &mut y[..n],
+        z: &mut z[..n],
+    }
+}
+
+/// Lane `k` of `rows`.
+#[inline(always)]
+fn get<const L: usize>(rows: &Rows3<L>, k: usize) -> Vec3 {
+    Vec3::new(rows[0][k], rows[1][k], rows[2][k])
+}
+
+/// Writes lane `k` of `rows`.
+#[inline(always)]
+fn put<const L: usize>(rows: &mut Rows3<L>, k: usize, w: Vec3) {
+    (rows[0][k], rows[1][k], rows[2][k]) = (w.x, w.y, w.z);
+}
+
+/// The lane count of a sample call's slices, which must agree.
+fn sample_lanes<S: Lanes>(
+    wo: Vec3s<'_>,
+    u: Vec2s<'_>,
+    uc: &[f32],
+    out: &SampleOut<'_, S>,
+) -> Result<usize, LengthError> {
+    same_length(&[
+        wo.lanes()?,
+        u.lanes()?,
+        uc.len(),
+        out.wi.lanes()?,
+        S::lanes(&out.f)?,
+        out.pdf.len(),
+        out.lobe.len(),
+        out.eta.len(),
+    ])
+}
+
+/// Lanes `start..end` of a sample call's outputs, reborrowed.
+#[inline(always)]
+fn out_range<'b, S: Lanes>(
+    out: &'b mut SampleOut<'_, S>,
+    start: usize,
+    end: usize,
+) -> SampleOut<'b, S> {
+    SampleOut {
+        wi: out.wi.range(start, end),
+        f: S::lanes_of(&mut out.f, start, end),
+        pdf: &mut out.pdf[start..end],
+        lobe: &mut out.lobe[start..end],
+        eta: &mut out.eta[start..end],
+    }
+}
+
+/// A chunk's stack space for a part's samples.
+struct Samples {
+    wi: Rows3,
+    f: Rows,
+    pdf: [f32; PART],
+    lobe: [Lobes; PART],
+    eta: [f32; PART],
+}
+
+impl Samples {
+    /// Zeroed space.
+    #[inline(always)]
+    fn new() -> Self {
+        Self {
+            wi: [[0.0; PART]; 3],
+            f: [[0.0; PART]; 4],
+            pdf: [0.0; PART],
+            lobe: [Lobes::NONE; PART],
+            eta: [0.0; PART],
+        }
+    }
+
+    /// The first `n` lanes, for a part's sample call to write.
+    #[inline(always)]
+    fn out<S: Lanes>(&mut self, n: usize) -> SampleOut<'_, S> {
+        SampleOut {
+            wi: view_mut(&mut self.wi, n),
+            f: S::rows_mut(&mut self.f, n),
+            pdf: &mut self.pdf[..n],
+            lobe: &mut self.lobe[..n],
+            eta: &mut self.eta[..n],
+        }
+    }
+
+    /// Lane `k`'s sample, `None` where the part had none (a density of 0 marks it).
+    #[inline(always)]
+    fn get<S: Lanes>(&self, k: usize) -> Option<BxdfSample<S>> {
+        (self.pdf[k] != 0.0).then(|| BxdfSample {
+            wi: get(&self.wi, k),
+            f: S::rows_get(&self.f, k),
+            pdf: self.pdf[k],
+            lobe: self.lobe[k],
+            eta: self.eta[k],
+        })
+    }
+}
+
+/// Writes a sample (or, for `None`, the zeros of a lane without one) to lane `k` of `out`.
+#[inline(always)]
+fn put_sample<S: Lanes>(out: &mut SampleOut<'_, S>, k: usize, s: Option<BxdfSample<S>>) {
+    let s = s.unwrap_or(BxdfSample {
+        wi: Vec3::ZERO,
+        f: S::zero(),
+        pdf: 0.0,
+        lobe: Lobes::NONE,
+        eta: 0.0,
+    });
+    out.wi.put(k, s.wi);
+    S::put(&mut out.f, k, s.f);
+    out.pdf[k] = s.pdf;
+    out.lobe[k] = s.lobe;
+    out.eta[k] = s.eta;
+}
+
+impl<A, B> Batch for Mix<A, B>
+where
+    A: Batch,
+    B: Batch<Spectrum = A::Spectrum>,
+    A::Spectrum: Lanes,
+{
+    fn eval_batch(
+        &self,
+        wo: Vec3s<'_>,
+        wi: Vec3s<'_>,
+        mut f: <A::Spectrum as Lanes>::Mut<'_>,
+    ) -> Result<(), LengthError> {
+        type S<A> = <A as Prepare>::Spectrum;
+        let n = same_length(&[wo.lanes()?, wi.lanes()?, S::<A>::lanes(&f)?])?;
+        let (mut fa, mut fb): (Rows, Rows) = ([[0.0; PART]; 4], [[0.0; PART]; 4]);
+        for (start, end) in chunks::<PART>(n) {
+            let (o, i, m) = (wo.range(start, end), wi.range(start, end), end - start);
+            self.first()
+                .eval_batch(o, i, S::<A>::rows_mut(&mut fa, m))?;
+            self.second()
+                .eval_batch(o, i, S::<A>::rows_mut(&mut fb, m))?;
+            for k in 0..m {
+                let v = self.blend(S::<A>::rows_get(&fa, k), S::<A>::rows_get(&fb, k));
+                S::<A>::put(&mut f, start + k, v);
+            }
+        }
+        Ok(())
+    }
+
+    fn pdf_batch(&self, wo: Vec3s<'_>, wi: Vec3s<'_>, pdf: &mut [f32]) -> Result<(), LengthError> {
+        let n = same_length(&[wo.lanes()?, wi.lanes()?, pdf.len()])?;
+        let (mut pa, mut pb) = ([0.0; WIDE], [0.0; WIDE]);
+        for (start, end) in chunks::<WIDE>(n) {
+            let (o, i, m) = (wo.range(start, end), wi.range(start, end), end - start);
+            self.first().pdf_batch(o, i, &mut pa[..m])?;
+            self.second().pdf_batch(o, i, &mut pb[..m])?;
+            for (k, p) in pdf[start..end].iter_mut().enumerate() {
+                *p = self.blend_pdf(pa[k], pb[k]);
+            }
+        }
+        Ok(())
+    }
+
+    /// Both parts sample every lane (each with its remapped `uc`) and each lane keeps the one
+    /// its `uc` chose; both parts' values and densities at the kept directions give the other
+    /// part's (the sampled part's are its sample's, as in the scalar call).
+    fn sample_batch(
+        &self,
+        wo: Vec3s<'_>,
+        u: Vec2s<'_>,
+        uc: &[f32],
+        mut out: SampleOut<'_, A::Spectrum>,
+    ) -> Result<(), LengthError> {
+        type S<A> = <A as Prepare>::Spectrum;
+        if self.stochastic() {
+            return run(sample_kernel::<_, Plain>(self, wo, u, uc, out));
+        }
+        let n = sample_lanes(wo, u, uc, &out)?;
+        let (wa, wb) = (1.0 - self.weight(), self.weight());
+        let (mut sa, mut sb) = (Samples::new(), Samples::new());
+        let (mut uca, mut ucb) = ([0.0; PART], [0.0; PART]);
+        let mut kept: Rows3 = [[0.0; PART]; 3];
+        let (mut fa, mut fb): (Rows, Rows) = ([[0.0; PART]; 4], [[0.0; PART]; 4]);
+        let (mut pa, mut pb) = ([0.0; PART], [0.0; PART]);
+        for (start, end) in chunks::<PART>(n) {
+            let (o, m) = (wo.range(start, end), end - start);
+            let (v, c) = (u.range(start, end), &uc[start..end]);
+            for k in 0..m {
+                uca[k] = reuse_uniform(c[k], 0.0, wa);
+                ucb[k] = reuse_uniform(c[k], wa, wb);
+            }
+            self.first().sample_batch(o, v, &uca[..m], sa.out(m))?;
+            self.second().sample_batch(o, v, &ucb[..m], sb.out(m))?;
+            for (k, &c) in c.iter().enumerate() {
+                let s = if picks(c, wa) { &sa } else { &sb };
+                // A lane without a sample is evaluated at the normal, and its numbers unused.
+                let w = if s.pdf[k] != 0.0 {
+                    get(&s.wi, k)
+                } else {
+                    Vec3::Z
+                };
+                put(&mut kept, k, w);
+            }
+            let w = view(&kept, m);
+            self.first()
+                .eval_batch(o, w, S::<A>::rows_mut(&mut fa, m))?;
+            self.first().pdf_batch(o, w, &mut pa[..m])?;
+            self.second()
+                .eval_batch(o, w, S::<A>::rows_mut(&mut fb, m))?;
+            self.second().pdf_batch(o, w, &mut pb[..m])?;
+            for k in 0..m {
+                let choose_a = picks(c[k], wa);
+                let s = if choose_a {
+                    sa.get(k)
+                        .map(|s| (s, wa, (S::<A>::rows_get(&fb, k), pb[k])))
+                } else {
+                    sb.get(k)
+                        .map(|s| (s, wb, (S::<A>::rows_get(&fa, k), pa[k])))
+                };
+                let s = s.and_then(|(s, p, other)| self.finish(s, p, choose_a, || other));
+                put_sample(&mut out, start + k, s);
+            }
+        }
+        Ok(())
+    }
+}
+
+/// A chunk of `wo` seen from above and of `wi` mirrored with it, as [`TwoSided`] sees them
+/// (`wi` may be absent: a sample call's chunk).
+#[inline(always)]
+fn from_above<const L: usize>(
+    wo: Vec3s<'_>,
+    wi: Option<Vec3s<'_>>,
+    up: &mut Rows3<L>,
+    wi_up: &mut Rows3<L>,
+) {
+    // Every slice cut to one length, so that the loop has no bounds checks and vectorises.
+    let n = wo.x.len();
+    let (x, y, z) = (&wo.x[..n], &wo.y[..n], &wo.z[..n]);
+    let [ux, uy, uz] = up;
+    let (ux, uy, uz) = (&mut ux[..n], &mut uy[..n], &mut uz[..n]);
+    for k in 0..n {
+        (ux[k], uy[k], uz[k]) = (x[k], y[k], if z[k] < 0.0 { -z[k] } else { z[k] });
+    }
+    if let Some(wi) = wi {
+        let (ix, iy, iz) = (&wi.x[..n], &wi.y[..n], &wi.z[..n]);
+        let [wx, wy, wz] = wi_up;
+        let (wx, wy, wz) = (&mut wx[..n], &mut wy[..n], &mut wz[..n]);
+        for k in 0..n {
+            (wx[k], wy[k]) = (ix[k], iy[k]);
+            wz[k] = if z[k] < 0.0 { -iz[k] } else { iz[k] };
+        }
+    }
+}
+
+impl<B: Batch> Batch for TwoSided<B>
+where
+    B::Spectrum: Lanes,
+{
+    fn eval_batch(
+        &self,
+        wo: Vec3s<'_>,
+        wi: Vec3s<'_>,
+        mut f: <B::Spectrum as Lanes>::Mut<'_>,
+    ) -> Result<(), LengthError> {
+        let n = same_length(&[wo.lanes()?, wi.lanes()?, B::Spectrum::lanes(&f)?])?;
+        let (mut up, mut wi_up): (Rows3<WIDE>, Rows3<WIDE>) = ([[0.0; WIDE]; 3], [[0.0; WIDE]; 3]);
+        for (start, end) in chunks::<WIDE>(n) {
+            let m = end - start;
+            from_above(
+                wo.range(start, end),
+                Some(wi.range(start, end)),
+                &mut up,
+                &mut wi_up,
+            );
+            let out = B::Spectrum::lanes_of(&mut f, start, end);
+            self.inner()
+                .eval_batch(view(&up, m), view(&wi_up, m), out)?;
+        }
+        Ok(())
+    }
+
+    fn pdf_batch(&self, wo: Vec3s<'_>, wi: Vec3s<'_>, pdf: &mut [f32]) -> Result<(), LengthError> {
+        let n = same_length(&[wo.lanes()?, wi.lanes()?, pdf.len()])?;
+        let (mut up, mut wi_up): (Rows3<WIDE>, Rows3<WIDE>) = ([[0.0; WIDE]; 3], [[0.0; WIDE]; 3]);
+        for (start, end) in chunks::<WIDE>(n) {
+            let m = end - start;
+            from_above(
+                wo.range(start, end),
+                Some(wi.range(start, end)),
+                &mut up,
+                &mut wi_up,
+            );
+            let out = &mut pdf[start..end];
+            self.inner().pdf_batch(view(&up, m), view(&wi_up, m), out)?;
+        }
+        Ok(())
+    }
+
+    fn sample_batch(
+        &self,
+        wo: Vec3s<'_>,
+        u: Vec2s<'_>,
+        uc: &[f32],
+        mut out: SampleOut<'_, B::Spectrum>,
+    ) -> Result<(), LengthError> {
+        let n = sample_lanes(wo, u, uc, &out)?;
+        let (mut up, mut unused): (Rows3<WIDE>, Rows3<WIDE>) = ([[0.0; WIDE]; 3], [[0.0; WIDE]; 3]);
+        for (start, end) in chunks::<WIDE>(n) {
+            let (o, m) = (wo.range(start, end), end - start);
+            from_above(o, None, &mut up, &mut unused);
+            let (v, c) = (u.range(start, end), &uc[start..end]);
+            let part = out_range(&mut out, start, end);
+            self.inner().sample_batch(view(&up, m), v, c, part)?;
+            // A sample drawn from above goes back below with `wo` (a lane without one stays 0).
+            let (z, pdf, oz) = (&mut out.wi.z[start..end], &out.pdf[start..end], &o.z[..m]);
+            for k in 0..m {
+                let below = (oz[k] < 0.0) & (pdf[k] != 0.0);
+                z[k] = if below { -z[k] } else { z[k] };
+            }
+        }
+        Ok(())
+    }
+}
+
+impl<B, S> Batch for Mono<B, S>
+where
+    B: Batch<Spectrum = f32>,
+    S: Spectrum + Lanes,
+{
+    fn eval_batch(
+        &self,
+        wo: Vec3s<'_>,
+        wi: Vec3s<'_>,
+        mut f: S::Mut<'_>,
+    ) -> Result<(), LengthError> {
+        let n = same_length(&[wo.lanes()?, wi.lanes()?, S::lanes(&f)?])?;
+        let mut g = [0.0; WIDE];
+        for (start, end) in chunks::<WIDE>(n) {
+            let g = &mut g[..end - start];
+            self.inner()
+                .eval_batch(wo.range(start, end), wi.range(start, end), g)?;
+            for (k, &v) in g.iter().enumerate() {
+                S::put(&mut f, start + k, S::splat(v));
+            }
+        }
+        Ok(())
+    }
+
+    fn pdf_batch(&self, wo: Vec3s<'_>, wi: Vec3s<'_>, pdf: &mut [f32]) -> Result<(), LengthError> {
+        self.inner().pdf_batch(wo, wi, pdf)
+    }
+
+    fn sample_batch(
+        &self,
+        wo: Vec3s<'_>,
+        u: Vec2s<'_>,
+        uc: &[f32],
+        mut out: SampleOut<'_, S>,
+    ) -> Result<(), LengthError> {
+        let n = sample_lanes(wo, u, uc, &out)?;
+        let mut g = [0.0; WIDE];
+        for (start, end) in chunks::<WIDE>(n) {
+            let g = &mut g[..end - start];
+            let (o, v, c) = (wo.range(start, end), u.range(start, end), &uc[start..end]);
+            let inner = SampleOut {
+                wi: out.wi.range(start, end),
+                f: &mut *g,
+                pdf: &mut out.pdf[start..end],
+                lobe: &mut out.lobe[start..end],
+                eta: &mut out.eta[start..end],
+            };
+            self.inner().sample_batch(o, v, c, inner)?;
+            for (k, &v) in g.iter().enumerate() {
+                S::put(&mut out.f, start + k, S::splat(v));
+            }
+        }
+        Ok(())
+    }
+}
