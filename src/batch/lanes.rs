@@ -145,6 +145,10 @@ pub struct Vec4sMut<'a> {
 
 /// A [`Spectrum`] whose batched values go to one slice per channel: `&mut [f32]` for `f32`,
 /// [`Vec3sMut`] for `Vec3`, [`Vec4sMut`] for `Vec4`.
+///
+/// Its hidden methods (a chunk of lanes in stack space, a range of an output) serve the
+/// batched calls of the models built from others; a spectrum of up to four channels of your
+/// own implements them as the crate's three do.
 pub trait Lanes: Spectrum {
     /// The slices a batched call writes this spectrum's values into.
     type Mut<'a>;

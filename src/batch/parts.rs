@@ -278,31 +278,30 @@ where
     }
 }
 
-/// A chunk of `wo` seen from above and of `wi` mirrored with it, as [`TwoSided`] sees them
-/// (`wi` may be absent: a sample call's chunk).
+/// The `z` of a chunk of `wo` seen from above and of `wi` mirrored with it, as [`TwoSided`]
+/// sees them (`wi` may be absent: a sample call's chunk); `x` and `y` stay as they are.
 #[inline(always)]
-fn from_above<const L: usize>(
-    wo: Vec3s<'_>,
-    wi: Option<Vec3s<'_>>,
-    up: &mut Rows3<L>,
-    wi_up: &mut Rows3<L>,
-) {
+fn from_above(wo_z: &[f32], wi_z: Option<&[f32]>, up: &mut [f32; WIDE], wi_up: &mut [f32; WIDE]) {
     // Every slice cut to one length, so that the loop has no bounds checks and vectorises.
-    let n = wo.x.len();
-    let (x, y, z) = (&wo.x[..n], &wo.y[..n], &wo.z[..n]);
-    let [ux, uy, uz] = up;
-    let (ux, uy, uz) = (&mut ux[..n], &mut uy[..n], &mut uz[..n]);
+    let n = wo_z.len();
+    let (z, up) = (&wo_z[..n], &mut up[..n]);
     for k in 0..n {
-        (ux[k], uy[k], uz[k]) = (x[k], y[k], if z[k] < 0.0 { -z[k] } else { z[k] });
+        up[k] = if z[k] < 0.0 { -z[k] } else { z[k] };
     }
-    if let Some(wi) = wi {
-        let (ix, iy, iz) = (&wi.x[..n], &wi.y[..n], &wi.z[..n]);
-        let [wx, wy, wz] = wi_up;
-        let (wx, wy, wz) = (&mut wx[..n], &mut wy[..n], &mut wz[..n]);
+    if let Some(wi_z) = wi_z {
+        let (iz, wi_up) = (&wi_z[..n], &mut wi_up[..n]);
         for k in 0..n {
-            (wx[k], wy[k]) = (ix[k], iy[k]);
-            wz[k] = if z[k] < 0.0 { -iz[k] } else { iz[k] };
+            wi_up[k] = if z[k] < 0.0 { -iz[k] } else { iz[k] };
         }
+    }
+}
+
+/// Lanes `start..end` of `w`, with the `z` of `z`.
+#[inline(always)]
+fn with_z<'a>(w: Vec3s<'a>, start: usize, end: usize, z: &'a [f32]) -> Vec3s<'a> {
+    Vec3s {
+        z: &z[..end - start],
+        ..w.range(start, end)
     }
 }
 
@@ -317,35 +316,25 @@ where
         mut f: <B::Spectrum as Lanes>::Mut<'_>,
     ) -> Result<(), LengthError> {
         let n = same_length(&[wo.lanes()?, wi.lanes()?, B::Spectrum::lanes(&f)?])?;
-        let (mut up, mut wi_up): (Rows3<WIDE>, Rows3<WIDE>) = ([[0.0; WIDE]; 3], [[0.0; WIDE]; 3]);
+        let (mut up, mut wi_up) = ([0.0; WIDE], [0.0; WIDE]);
         for (start, end) in chunks::<WIDE>(n) {
-            let m = end - start;
-            from_above(
-                wo.range(start, end),
-                Some(wi.range(start, end)),
-                &mut up,
-                &mut wi_up,
-            );
+            let z = Some(&wi.z[start..end]);
+            from_above(&wo.z[start..end], z, &mut up, &mut wi_up);
+            let (o, i) = (with_z(wo, start, end, &up), with_z(wi, start, end, &wi_up));
             let out = B::Spectrum::lanes_of(&mut f, start, end);
-            self.inner()
-                .eval_batch(view(&up, m), view(&wi_up, m), out)?;
+            self.inner().eval_batch(o, i, out)?;
         }
         Ok(())
     }
 
     fn pdf_batch(&self, wo: Vec3s<'_>, wi: Vec3s<'_>, pdf: &mut [f32]) -> Result<(), LengthError> {
         let n = same_length(&[wo.lanes()?, wi.lanes()?, pdf.len()])?;
-        let (mut up, mut wi_up): (Rows3<WIDE>, Rows3<WIDE>) = ([[0.0; WIDE]; 3], [[0.0; WIDE]; 3]);
+        let (mut up, mut wi_up) = ([0.0; WIDE], [0.0; WIDE]);
         for (start, end) in chunks::<WIDE>(n) {
-            let m = end - start;
-            from_above(
-                wo.range(start, end),
-                Some(wi.range(start, end)),
-                &mut up,
-                &mut wi_up,
-            );
-            let out = &mut pdf[start..end];
-            self.inner().pdf_batch(view(&up, m), view(&wi_up, m), out)?;
+            let z = Some(&wi.z[start..end]);
+            from_above(&wo.z[start..end], z, &mut up, &mut wi_up);
+            let (o, i) = (with_z(wo, start, end, &up), with_z(wi, start, end, &wi_up));
+            self.inner().pdf_batch(o, i, &mut pdf[start..end])?;
         }
         Ok(())
     }
@@ -358,16 +347,17 @@ where
         mut out: SampleOut<'_, B::Spectrum>,
     ) -> Result<(), LengthError> {
         let n = sample_lanes(wo, u, uc, &out)?;
-        let (mut up, mut unused): (Rows3<WIDE>, Rows3<WIDE>) = ([[0.0; WIDE]; 3], [[0.0; WIDE]; 3]);
+        let (mut up, mut unused) = ([0.0; WIDE], [0.0; WIDE]);
         for (start, end) in chunks::<WIDE>(n) {
-            let (o, m) = (wo.range(start, end), end - start);
-            from_above(o, None, &mut up, &mut unused);
+            let oz = &wo.z[start..end];
+            from_above(oz, None, &mut up, &mut unused);
             let (v, c) = (u.range(start, end), &uc[start..end]);
             let part = out_range(&mut out, start, end);
-            self.inner().sample_batch(view(&up, m), v, c, part)?;
+            self.inner()
+                .sample_batch(with_z(wo, start, end, &up), v, c, part)?;
             // A sample drawn from above goes back below with `wo` (a lane without one stays 0).
-            let (z, pdf, oz) = (&mut out.wi.z[start..end], &out.pdf[start..end], &o.z[..m]);
-            for k in 0..m {
+            let (z, pdf) = (&mut out.wi.z[start..end], &out.pdf[start..end]);
+            for k in 0..oz.len() {
                 let below = (oz[k] < 0.0) & (pdf[k] != 0.0);
                 z[k] = if below { -z[k] } else { z[k] };
             }

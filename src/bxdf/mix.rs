@@ -28,6 +28,9 @@ use glam::{Vec2, Vec3};
 /// carries an estimate of the mixture's density at its direction, the chosen model's
 /// estimate blended with the other's `pdf`, with the value `f = weight · pdf / |cos θi|`.
 ///
+/// Batched ([`Batch`](crate::batch::Batch)): through the parts' own batched calls, a chunk of
+/// lanes at a time, so both parts implement `Batch` (see the [`batch`](crate::batch) docs).
+///
 /// Laws (measured by `tests/bxdf_mix.rs`): whatever the parts meet, since value and pdf are
 /// exactly the weighted sums and the albedo the weighted sum of theirs (within Monte Carlo
 /// error); `check_bxdf` passes for the blends tested there.

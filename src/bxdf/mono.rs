@@ -12,7 +12,9 @@ use glam::{Vec2, Vec3};
 /// [`SmoothDielectric`](super::SmoothDielectric), [`ThinDielectric`](super::ThinDielectric))
 /// are `f32`: one relative index, the same at every wavelength, so their value is one
 /// number. A renderer that holds every material as an RGB model wraps them in `Mono`; the
-/// directions, densities and lobes are the model's own.
+/// directions, densities and lobes are the model's own. Batched
+/// ([`Batch`](crate::batch::Batch)): through the model's own batched calls, a chunk of lanes at
+/// a time, its values then repeated, so the model implements `Batch`.
 ///
 /// ```
 /// use lobe::bxdf::{Bxdf, Mono, SmoothDielectric};

@@ -21,6 +21,9 @@ fn mirror(w: Vec3) -> Vec3 {
 /// sampler, the density and the lobes are `B`'s, mirrored. Light never crosses: `f = 0` when
 /// `wo` and `wi` are on opposite sides, as it is for `B`.
 ///
+/// Batched ([`Batch`](crate::batch::Batch)): through `B`'s own batched calls on the directions
+/// seen from above, a chunk of lanes at a time, so `B` implements `Batch`.
+///
 /// Laws (measured by `tests/bxdf_mix.rs`): `B`'s on each side — the value from below is
 /// exactly `B`'s mirror image, so positivity, reciprocity, the energy bound and the sampler
 /// carry over; `check_bxdf` passes with viewer directions on both sides.
