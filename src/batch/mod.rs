@@ -135,7 +135,8 @@
 //! densities (24 KiB for `TwoSided`); each part's call has a fixed cost (its loop's set-up,
 //! a remainder that runs outside the vector loop) that these chunk lengths keep to a few
 //! percent. `cargo bench --bench batched` times every model's batched calls against its
-//! scalar calls; the README has a run.
+//! scalar calls; the README has a run. The rules these loops follow, and how to find why one
+//! stays scalar, are in the repository's `docs/batched-loops.md`.
 //!
 //! **Batch size.** Keep a batch within the L2 cache: an RGB `eval`'s slices take 36 bytes per
 //! lane, so 2¹⁵ lanes are 1.1 MiB (the machine measured here has a 2 MiB L2). The outputs are
