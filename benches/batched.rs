@@ -5,6 +5,7 @@
 //! ```sh
 //! cargo bench --bench batched            # every model
 //! cargo bench --bench batched -- Mix     # the models whose name contains "Mix"
+//! cargo bench --bench batched -- --test  # one short round (CI runs every bench so)
 //! ```
 //!
 //! Each round times every kernel once, in turn (scalar `eval`, batched `eval`, scalar `pdf`,
@@ -173,11 +174,19 @@ fn a(x: f32) -> Alpha {
 }
 
 fn main() {
-    // `cargo bench` passes `--bench`; a further argument filters the models by name.
-    let filter = std::env::args()
-        .skip(1)
+    // `cargo bench` passes `--bench`; a further argument filters the models by name, and
+    // `--test` (CI's smoke run of every bench) times one short round.
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let filter = args
+        .iter()
         .find(|a| !a.starts_with("--"))
+        .cloned()
         .unwrap_or_default();
+    let (rounds, per_round) = if args.iter().any(|a| a == "--test") {
+        (1, Duration::from_millis(1))
+    } else {
+        (15, Duration::from_millis(20))
+    };
     let (above, sides) = (inputs(), two_sided(&inputs()));
     let below = mirrored(&above);
     let (la, ls, lb) = (
@@ -254,7 +263,7 @@ fn main() {
     time!("smooth glass (mono)", SmoothDielectric::new(glass), s);
     time!("thin glass (mono)", ThinDielectric::new(glass), s);
 
-    let times = interleave::rounds(&mut all, 15, Duration::from_millis(20));
+    let times = interleave::rounds(&mut all, rounds, per_round);
     println!("| model | call | scalar (ns per lane) | batched | batched / scalar |");
     println!("| --- | --- | --- | --- | --- |");
     for (k, t) in all.chunks(2).zip(times.chunks(2)) {
