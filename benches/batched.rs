@@ -248,6 +248,11 @@ fn main() {
         Mix::new(lambert, ggx_gold, 0.5).unwrap(),
         i
     );
+    time!(
+        "Mix(Lambert, Beckmann gold) w 0.5",
+        Mix::new(lambert, beckmann, 0.5).unwrap(),
+        i
+    );
     time!("TwoSided(GGX gold), half below", TwoSided::new(ggx_gold), b);
     time!("Mono(rough glass) RGB", Mono::<_, Vec3>::new(rough), s);
     let coated = CoatedDiffuse::coated_diffuse(rgb, Ggx::isotropic(a(0.3)), glass).unwrap();

@@ -30,7 +30,8 @@ struct Inputs {
 
 fn direction(rng: &mut Pcg32) -> Vec3 {
     let z = match rng.next_u32() % 8 {
-        0 => 0.0,
+        // Both zeros: `TwoSided` mirrors a direction with `z < 0` only, so `-0` stays.
+        0 => [0.0, -0.0][(rng.next_u32() % 2) as usize],
         1 => 1e-7 * (2.0 * rng.next_f32() - 1.0),
         2 => 1.0,
         3 => -1.0,
@@ -469,7 +470,19 @@ fn the_other_models_equal_the_scalar_path() {
 
 #[test]
 fn slices_of_different_lengths_are_refused_without_writing() {
-    let m = Lambert::new(0.5_f32).unwrap();
+    use lobe::bxdf::{Mix, Mono, TwoSided};
+    let lambert = Lambert::new(0.5_f32).unwrap();
+    refuses_without_writing("Lambert", &lambert);
+    // The models built from others check the lengths before they call their parts.
+    refuses_without_writing("Mix", &Mix::new(lambert, lambert, 0.5).unwrap());
+    refuses_without_writing("TwoSided", &TwoSided::new(lambert));
+    let glass = SmoothDielectric::new(Eta::new(1.5).unwrap());
+    refuses_without_writing("Mono", &Mono::<_, f32>::new(glass));
+}
+
+/// `m`'s three batched calls refuse slices of different lengths, writing nothing, and accept
+/// empty ones.
+fn refuses_without_writing<M: Batch<Spectrum = f32>>(name: &str, m: &M) {
     let (wo, wi) = (Soa::of(&[Vec3::Z; 4]), Soa::of(&[Vec3::Z; 3]));
     let mut out = vec![-1.0; 4];
     assert_eq!(
@@ -477,19 +490,57 @@ fn slices_of_different_lengths_are_refused_without_writing() {
         Err(LengthError {
             expected: 4,
             found: 3
-        })
+        }),
+        "{name}"
     );
-    assert_eq!(out, vec![-1.0; 4]);
+    assert_eq!(out, vec![-1.0; 4], "{name}");
     // A short coordinate slice inside one argument is refused too.
     let bad = Vec3s {
         x: &wo.x,
         y: &wo.y[..2],
         z: &wo.z,
     };
-    assert!(m.pdf_batch(bad, wo.view(), &mut out).is_err());
+    assert!(m.pdf_batch(bad, wo.view(), &mut out).is_err(), "{name}");
+    assert_eq!(out, vec![-1.0; 4], "{name}");
+    let (half, unit) = ([0.5; 4], [0.5; 3]);
+    let (mut swi, mut lobe, mut eta) = (Soa::zeros(4), vec![Lobes::NONE; 4], vec![-1.0; 4]);
+    let (mut f, mut pdf) = (vec![-1.0; 4], vec![-1.0; 4]);
+    let out = SampleOut {
+        wi: swi.view_mut(),
+        f: &mut f[..],
+        pdf: &mut pdf,
+        lobe: &mut lobe,
+        eta: &mut eta,
+    };
+    let u = Vec2s { x: &half, y: &half };
+    assert!(m.sample_batch(wo.view(), u, &unit, out).is_err(), "{name}");
+    assert!(
+        f.iter().chain(&pdf).chain(&eta).all(|&x| x == -1.0),
+        "{name}"
+    );
     // Empty batches are fine.
     let empty = Soa::of(&[]);
-    assert_eq!(m.eval_batch(empty.view(), empty.view(), &mut []), Ok(()));
+    assert_eq!(
+        m.eval_batch(empty.view(), empty.view(), &mut []),
+        Ok(()),
+        "{name}"
+    );
+    assert_eq!(
+        m.pdf_batch(empty.view(), empty.view(), &mut []),
+        Ok(()),
+        "{name}"
+    );
+    let (mut swi, mut nothing) = (Soa::zeros(0), [0.0; 0]);
+    let (mut f, mut pdf, mut lobe) = ([0.0; 0], [0.0; 0], [Lobes::NONE; 0]);
+    let out = SampleOut {
+        wi: swi.view_mut(),
+        f: &mut f[..],
+        pdf: &mut pdf,
+        lobe: &mut lobe,
+        eta: &mut nothing,
+    };
+    let u = Vec2s { x: &[], y: &[] };
+    assert_eq!(m.sample_batch(empty.view(), u, &[], out), Ok(()), "{name}");
 }
 
 /// The combinators and the stochastic layered models (issue 12) through the default batched
@@ -564,6 +615,13 @@ fn the_models_built_from_others_equal_the_scalar_path_through_their_parts() {
         );
     }
     let gold = conductor(Masking::HeightCorrelated);
+    // One part never chosen: its share of every chunk is empty.
+    for w in [0.0, 1.0] {
+        check(
+            &format!("Mix(Lambert, Beckmann gold) w {w}"),
+            &Mix::new(lambert, gold, w).unwrap(),
+        );
+    }
     let mirror = Mirror::new(Schlick::new(Vec3::new(0.9, 0.7, 0.5)).unwrap());
     let nested = Mix::new(Mix::new(lambert, gold, 0.3).unwrap(), mirror, 0.2).unwrap();
     let lobes = check("Mix(Mix(Lambert, Beckmann gold), Mirror)", &nested);

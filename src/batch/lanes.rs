@@ -147,8 +147,9 @@ pub struct Vec4sMut<'a> {
 /// [`Vec3sMut`] for `Vec3`, [`Vec4sMut`] for `Vec4`.
 ///
 /// Its hidden methods (a chunk of lanes in stack space, a range of an output) serve the
-/// batched calls of the models built from others; a spectrum of up to four channels of your
-/// own implements them as the crate's three do.
+/// batched calls of the models built from others; a spectrum of your own implements them as
+/// the crate's three do, on `lobe::batch::Rows` (stack space for up to four channels: a
+/// spectrum of more does not fit, and cannot be a part of `Mix`, `TwoSided` or `Mono`).
 pub trait Lanes: Spectrum {
     /// The slices a batched call writes this spectrum's values into.
     type Mut<'a>;

@@ -29,10 +29,10 @@
 //! ```
 //!
 //! **The same numbers as the scalar path.** A batched call runs the model's own scalar code
-//! ([`Prepare`]) on every lane (two exceptions, below: the energy-compensated microfacet
-//! model's `sample` has a second form for loops, written beside the scalar one and equal to
-//! it by construction, and that model's loops look its albedo table up in passes of their
-//! own, by the scalar path's lookup), and the results
+//! ([`Prepare`]) on every lane (the exceptions, below: some models' lanes run a second form
+//! written beside the scalar one and equal to it by construction, and look their albedo tables
+//! up in passes of their own, by the scalar path's lookup; the models built from others call
+//! their parts' batched calls), and the results
 //! equal `eval`, `pdf` and `sample` bit for bit where the compiler keeps the operations as
 //! written (it does not contract or reassociate `f32` arithmetic, so that is every lane the
 //! tests have seen; `tests/batch.rs` checks adversarial lanes — grazing, below the horizon,
@@ -124,19 +124,21 @@
 //! implement [`Batch`] themselves (every model of the crate does; a model of your own gets it
 //! from `impl Batch for MyModel {}`). Inlined into one loop of the whole blend, a microfacet
 //! part's choice of masking term stayed inside the loop, which stayed scalar: the batched
-//! `Mix(Lambert, GGX gold)` `eval` cost what the scalar calls did. A blend's `sample` draws from
-//! both parts in every lane, keeps the one the lane's `uc` chose, then evaluates both parts at
-//! the kept direction (the other part's value and density blend with the sampled part's, as
-//! in the scalar call): about twice the parts' work, still under half the scalar calls' time.
-//! A blend with a stochastic part (a layered model) samples through the provided loop: its
-//! sample carries the chosen part's random-walk estimates, not `eval`'s and `pdf`'s. Stack
-//! space: a blend's chunk is 256 lanes of values (an RGB `Mix`'s `sample` holds about 34 KiB;
-//! each level of a nested blend adds its own), the others' 1,024 lanes of directions or
-//! densities (24 KiB for `TwoSided`); each part's call has a fixed cost (its loop's set-up,
-//! a remainder that runs outside the vector loop) that these chunk lengths keep to a few
-//! percent. `cargo bench --bench batched` times every model's batched calls against its
-//! scalar calls; the README has a run. The rules these loops follow, and how to find why one
-//! stays scalar, are in the repository's `docs/batched-loops.md`.
+//! `Mix(Lambert, GGX gold)` `eval` cost what the scalar calls did. A blend's `sample` gathers
+//! the lanes whose `uc` chose each part, has that part sample them and the other part evaluate
+//! its value and density at the sampled directions (which blend with the sampled part's, as in
+//! the scalar call), and scatters the results back: the scalar calls' work, one part's sample
+//! and the other's evaluation per lane. A blend with a stochastic part (a layered model)
+//! samples through the provided loop: its sample carries the chosen part's random-walk
+//! estimates, not `eval`'s and `pdf`'s. Stack space, per call: 21 KiB for a blend's `sample`
+//! (256 lanes; each level of a nested blend adds its own), 8 KiB for its `eval` (256 lanes of
+//! values of up to four channels) and `pdf` (1,024 lanes), 8 KiB for `TwoSided` (the mirrored
+//! `z` of 1,024 lanes of `wo` and `wi`), 4 KiB for `Mono` (1,024 values). Each part's call has
+//! a fixed cost (its loop's set-up, a remainder that runs outside the vector loop) that these
+//! chunk lengths keep to a few percent. `cargo bench --bench batched` times every model's
+//! batched calls against its scalar calls; the README has a run. The rules these loops
+//! follow, and how to find why one stays scalar, are in the repository's
+//! `docs/batched-loops.md`.
 //!
 //! **Batch size.** Keep a batch within the L2 cache: an RGB `eval`'s slices take 36 bytes per
 //! lane, so 2¹⁵ lanes are 1.1 MiB (the machine measured here has a 2 MiB L2). The outputs are
@@ -182,6 +184,8 @@ mod parts;
 mod tabulated;
 
 pub use isa::{InstructionSet, instruction_set};
+#[doc(hidden)]
+pub use lanes::Rows;
 pub use lanes::{Lanes, Vec2s, Vec3s, Vec3sMut, Vec4sMut};
 
 use crate::bxdf::{Lobes, Prepare};

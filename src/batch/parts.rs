@@ -141,10 +141,11 @@ impl Samples {
         }
     }
 
-    /// Lane `k`'s sample, `None` where the part had none (a density of 0 marks it).
+    /// Lane `k`'s sample, `None` where the part had none ([`Lobes::NONE`] marks it: a sample
+    /// may have a density of 0, a delta lobe of probability 0).
     #[inline(always)]
     fn get<S: Lanes>(&self, k: usize) -> Option<BxdfSample<S>> {
-        (self.pdf[k] != 0.0).then(|| BxdfSample {
+        (self.lobe[k] != Lobes::NONE).then(|| BxdfSample {
             wi: get(&self.wi, k),
             f: S::rows_get(&self.f, k),
             pdf: self.pdf[k],
@@ -214,9 +215,9 @@ where
         Ok(())
     }
 
-    /// Both parts sample every lane (each with its remapped `uc`) and each lane keeps the one
-    /// its `uc` chose; both parts' values and densities at the kept directions give the other
-    /// part's (the sampled part's are its sample's, as in the scalar call).
+    /// Each part samples the lanes whose `uc` chose it, gathered into stack space, and the
+    /// other part's value and density are evaluated at those samples' directions: the scalar
+    /// calls' work, one part's sample and the other's evaluation per lane.
     fn sample_batch(
         &self,
         wo: Vec3s<'_>,
@@ -224,55 +225,136 @@ where
         uc: &[f32],
         mut out: SampleOut<'_, A::Spectrum>,
     ) -> Result<(), LengthError> {
-        type S<A> = <A as Prepare>::Spectrum;
         if self.stochastic() {
             return run(sample_kernel::<_, Plain>(self, wo, u, uc, out));
         }
         let n = sample_lanes(wo, u, uc, &out)?;
         let (wa, wb) = (1.0 - self.weight(), self.weight());
-        let (mut sa, mut sb) = (Samples::new(), Samples::new());
-        let (mut uca, mut ucb) = ([0.0; PART], [0.0; PART]);
-        let mut kept: Rows3 = [[0.0; PART]; 3];
-        let (mut fa, mut fb): (Rows, Rows) = ([[0.0; PART]; 4], [[0.0; PART]; 4]);
-        let (mut pa, mut pb) = ([0.0; PART], [0.0; PART]);
+        let mut share = Share::new();
         for (start, end) in chunks::<PART>(n) {
-            let (o, m) = (wo.range(start, end), end - start);
-            let (v, c) = (u.range(start, end), &uc[start..end]);
-            for k in 0..m {
-                uca[k] = reuse_uniform(c[k], 0.0, wa);
-                ucb[k] = reuse_uniform(c[k], wa, wb);
+            let (o, v, c) = (wo.range(start, end), u.range(start, end), &uc[start..end]);
+            share.gather(o, v, c, |uc| {
+                picks(uc, wa).then(|| reuse_uniform(uc, 0.0, wa))
+            });
+            share.sample(self, self.first(), self.second(), true, wa, &mut out, start)?;
+            let b = |uc| (!picks(uc, wa)).then(|| reuse_uniform(uc, wa, wb));
+            share.gather(o, v, c, b);
+            share.sample(
+                self,
+                self.second(),
+                self.first(),
+                false,
+                wb,
+                &mut out,
+                start,
+            )?;
+        }
+        Ok(())
+    }
+}
+
+/// A part's share of a chunk of a blend's lanes: the lanes whose `uc` chose it, gathered, and
+/// the stack space for its samples and the other part's evaluation at them.
+struct Share {
+    /// How many lanes are gathered.
+    n: usize,
+    /// Each gathered lane's index in the chunk.
+    lane: [u32; PART],
+    wo: Rows3,
+    u: [[f32; PART]; 2],
+    /// The `uc` the part gets (remapped to `[0, 1)` as in the scalar call).
+    uc: [f32; PART],
+    samples: Samples,
+    /// The other part's value and density at each sample's direction.
+    f: Rows,
+    pdf: [f32; PART],
+}
+
+impl Share {
+    /// Zeroed space.
+    #[inline(always)]
+    fn new() -> Self {
+        Self {
+            n: 0,
+            lane: [0; PART],
+            wo: [[0.0; PART]; 3],
+            u: [[0.0; PART]; 2],
+            uc: [0.0; PART],
+            samples: Samples::new(),
+            f: [[0.0; PART]; 4],
+            pdf: [0.0; PART],
+        }
+    }
+
+    /// Gathers the lanes of a chunk for which `part(uc)` gives the part's `uc`.
+    #[inline(always)]
+    fn gather(
+        &mut self,
+        wo: Vec3s<'_>,
+        u: Vec2s<'_>,
+        uc: &[f32],
+        part: impl Fn(f32) -> Option<f32>,
+    ) {
+        self.n = 0;
+        for (k, &c) in uc.iter().enumerate() {
+            if let Some(c) = part(c) {
+                let j = self.n;
+                put(&mut self.wo, j, wo.get(k));
+                (self.u[0][j], self.u[1][j], self.uc[j]) = (u.x[k], u.y[k], c);
+                self.lane[j] = k as u32;
+                self.n += 1;
             }
-            self.first().sample_batch(o, v, &uca[..m], sa.out(m))?;
-            self.second().sample_batch(o, v, &ucb[..m], sb.out(m))?;
-            for (k, &c) in c.iter().enumerate() {
-                let s = if picks(c, wa) { &sa } else { &sb };
-                // A lane without a sample is evaluated at the normal, and its numbers unused.
-                let w = if s.pdf[k] != 0.0 {
-                    get(&s.wi, k)
-                } else {
-                    Vec3::Z
-                };
-                put(&mut kept, k, w);
+        }
+    }
+
+    /// Samples the gathered lanes with `drawn` (the blend's first part if `first`), chosen
+    /// with probability `p`, evaluates `other` at the samples, and writes each lane's result
+    /// to `out` (whose chunk starts at `start`) through `Mix::finish`.
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn sample<A, B, P, Q>(
+        &mut self,
+        mix: &Mix<A, B>,
+        drawn: &P,
+        other: &Q,
+        first: bool,
+        p: f32,
+        out: &mut SampleOut<'_, A::Spectrum>,
+        start: usize,
+    ) -> Result<(), LengthError>
+    where
+        A: Prepare,
+        B: Prepare<Spectrum = A::Spectrum>,
+        P: Batch<Spectrum = A::Spectrum>,
+        Q: Batch<Spectrum = A::Spectrum>,
+        A::Spectrum: Lanes,
+    {
+        type S<A> = <A as Prepare>::Spectrum;
+        let m = self.n;
+        if m == 0 {
+            return Ok(());
+        }
+        let (wo, u) = (
+            view(&self.wo, m),
+            Vec2s {
+                x: &self.u[0][..m],
+                y: &self.u[1][..m],
+            },
+        );
+        let s = &mut self.samples;
+        drawn.sample_batch(wo, u, &self.uc[..m], s.out(m))?;
+        // A lane without a sample is evaluated at the normal, and its numbers unused.
+        for j in 0..m {
+            if s.lobe[j] == Lobes::NONE {
+                put(&mut s.wi, j, Vec3::Z);
             }
-            let w = view(&kept, m);
-            self.first()
-                .eval_batch(o, w, S::<A>::rows_mut(&mut fa, m))?;
-            self.first().pdf_batch(o, w, &mut pa[..m])?;
-            self.second()
-                .eval_batch(o, w, S::<A>::rows_mut(&mut fb, m))?;
-            self.second().pdf_batch(o, w, &mut pb[..m])?;
-            for k in 0..m {
-                let choose_a = picks(c[k], wa);
-                let s = if choose_a {
-                    sa.get(k)
-                        .map(|s| (s, wa, (S::<A>::rows_get(&fb, k), pb[k])))
-                } else {
-                    sb.get(k)
-                        .map(|s| (s, wb, (S::<A>::rows_get(&fa, k), pa[k])))
-                };
-                let s = s.and_then(|(s, p, other)| self.finish(s, p, choose_a, || other));
-                put_sample(&mut out, start + k, s);
-            }
+        }
+        other.eval_batch(wo, view(&s.wi, m), S::<A>::rows_mut(&mut self.f, m))?;
+        other.pdf_batch(wo, view(&s.wi, m), &mut self.pdf[..m])?;
+        for j in 0..m {
+            let at = || (S::<A>::rows_get(&self.f, j), self.pdf[j]);
+            let r = s.get(j).and_then(|x| mix.finish(x, p, first, at));
+            put_sample(out, start + self.lane[j] as usize, r);
         }
         Ok(())
     }
@@ -356,9 +438,9 @@ where
             self.inner()
                 .sample_batch(with_z(wo, start, end, &up), v, c, part)?;
             // A sample drawn from above goes back below with `wo` (a lane without one stays 0).
-            let (z, pdf) = (&mut out.wi.z[start..end], &out.pdf[start..end]);
+            let (z, lobe) = (&mut out.wi.z[start..end], &out.lobe[start..end]);
             for k in 0..oz.len() {
-                let below = (oz[k] < 0.0) & (pdf[k] != 0.0);
+                let below = (oz[k] < 0.0) & (lobe[k] != Lobes::NONE);
                 z[k] = if below { -z[k] } else { z[k] };
             }
         }
