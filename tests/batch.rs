@@ -502,22 +502,6 @@ fn refuses_without_writing<M: Batch<Spectrum = f32>>(name: &str, m: &M) {
     };
     assert!(m.pdf_batch(bad, wo.view(), &mut out).is_err(), "{name}");
     assert_eq!(out, vec![-1.0; 4], "{name}");
-    let (half, unit) = ([0.5; 4], [0.5; 3]);
-    let (mut swi, mut lobe, mut eta) = (Soa::zeros(4), vec![Lobes::NONE; 4], vec![-1.0; 4]);
-    let (mut f, mut pdf) = (vec![-1.0; 4], vec![-1.0; 4]);
-    let out = SampleOut {
-        wi: swi.view_mut(),
-        f: &mut f[..],
-        pdf: &mut pdf,
-        lobe: &mut lobe,
-        eta: &mut eta,
-    };
-    let u = Vec2s { x: &half, y: &half };
-    assert!(m.sample_batch(wo.view(), u, &unit, out).is_err(), "{name}");
-    assert!(
-        f.iter().chain(&pdf).chain(&eta).all(|&x| x == -1.0),
-        "{name}"
-    );
     // Empty batches are fine.
     let empty = Soa::of(&[]);
     assert_eq!(
@@ -530,17 +514,27 @@ fn refuses_without_writing<M: Batch<Spectrum = f32>>(name: &str, m: &M) {
         Ok(()),
         "{name}"
     );
-    let (mut swi, mut nothing) = (Soa::zeros(0), [0.0; 0]);
-    let (mut f, mut pdf, mut lobe) = ([0.0; 0], [0.0; 0], [Lobes::NONE; 0]);
-    let out = SampleOut {
-        wi: swi.view_mut(),
-        f: &mut f[..],
-        pdf: &mut pdf,
-        lobe: &mut lobe,
-        eta: &mut nothing,
-    };
-    let u = Vec2s { x: &[], y: &[] };
-    assert_eq!(m.sample_batch(empty.view(), u, &[], out), Ok(()), "{name}");
+    // `sample`: refused for a `uc` one lane short (nothing written), accepted when empty.
+    for n in [4, 0] {
+        let wo = Soa::of(&vec![Vec3::Z; n]);
+        let (half, uc) = (vec![0.5; n], vec![0.5; n.saturating_sub(1)]);
+        let (mut swi, mut lobe) = (Soa::zeros(n), vec![Lobes::NONE; n]);
+        let (mut f, mut pdf, mut eta) = (vec![-1.0; n], vec![-1.0; n], vec![-1.0; n]);
+        let out = SampleOut {
+            wi: swi.view_mut(),
+            f: &mut f[..],
+            pdf: &mut pdf,
+            lobe: &mut lobe,
+            eta: &mut eta,
+        };
+        let u = Vec2s { x: &half, y: &half };
+        let refused = m.sample_batch(wo.view(), u, &uc, out).is_err();
+        assert_eq!(refused, n > 0, "{name}, {n} lanes");
+        assert!(
+            f.iter().chain(&pdf).chain(&eta).all(|&x| x == -1.0),
+            "{name}"
+        );
+    }
 }
 
 /// The combinators and the stochastic layered models (issue 12) through the default batched
