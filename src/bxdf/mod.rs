@@ -380,7 +380,8 @@ pub struct BxdfSample<S> {
     /// The solid-angle density of `wi` (for a delta lobe, the probability of choosing it).
     pub pdf: f32,
     /// The lobe the sample came from: one of reflection/transmission and one of
-    /// diffuse/glossy/specular.
+    /// diffuse/glossy/specular, never [`Lobes::NONE`] (the batched calls mark a lane without a
+    /// sample with it, and the batched `Mix` and `TwoSided` read their parts' lanes so).
     pub lobe: Lobes,
     /// The relative index `η_t/η_i` the path crossed, `1` for reflection.
     pub eta: f32,
