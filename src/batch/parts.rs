@@ -1,6 +1,7 @@
 //! The batched calls of the models built from other models ([`Mix`], [`TwoSided`], [`Mono`]):
-//! a chunk of [`PART`] lanes at a time through their parts' own batched calls, with the
-//! parts' inputs and outputs in stack space.
+//! a chunk of lanes at a time ([`PART`] where values of the spectrum are held, [`WIDE`]
+//! otherwise) through their parts' own batched calls, with the parts' inputs and outputs in
+//! stack space.
 //!
 //! A part's own batched call runs the loop written for it: a microfacet model's masking term
 //! fixed outside the loop, a compensated model's tables looked up a chunk at a time. The
