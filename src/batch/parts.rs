@@ -37,12 +37,12 @@ fn chunks<const L: usize>(n: usize) -> impl Iterator<Item = (usize, usize)> {
         .map(move |start| (start, n.min(start + L)))
 }
 
-/// Stack space for a chunk of `L` 3-vectors.
-type Rows3<const L: usize = PART> = [[f32; L]; 3];
+/// Stack space for a chunk of 3-vectors.
+type Rows3 = [[f32; PART]; 3];
 
 /// The first `n` lanes of `rows` as a [`Vec3s`].
 #[inline(always)]
-fn view<const L: usize>(rows: &Rows3<L>, n: usize) -> Vec3s<'_> {
+fn view(rows: &Rows3, n: usize) -> Vec3s<'_> {
     Vec3s {
         x: &rows[0][..n],
         y: &rows[1][..n],
@@ -52,7 +52,7 @@ fn view<const L: usize>(rows: &Rows3<L>, n: usize) -> Vec3s<'_> {
 
 /// The first `n` lanes of `rows` as a [`Vec3sMut`].
 #[inline(always)]
-fn view_mut<const L: usize>(rows: &mut Rows3<L>, n: usize) -> Vec3sMut<'_> {
+fn view_mut(rows: &mut Rows3, n: usize) -> Vec3sMut<'_> {
     let [x, y, z] = rows;
     Vec3sMut {
         x: &mut x[..n],
@@ -63,13 +63,13 @@ fn view_mut<const L: usize>(rows: &mut Rows3<L>, n: usize) -> Vec3sMut<'_> {
 
 /// Lane `k` of `rows`.
 #[inline(always)]
-fn get<const L: usize>(rows: &Rows3<L>, k: usize) -> Vec3 {
+fn get(rows: &Rows3, k: usize) -> Vec3 {
     Vec3::new(rows[0][k], rows[1][k], rows[2][k])
 }
 
 /// Writes lane `k` of `rows`.
 #[inline(always)]
-fn put<const L: usize>(rows: &mut Rows3<L>, k: usize, w: Vec3) {
+fn put(rows: &mut Rows3, k: usize, w: Vec3) {
     (rows[0][k], rows[1][k], rows[2][k]) = (w.x, w.y, w.z);
 }
 
