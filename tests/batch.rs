@@ -786,6 +786,37 @@ fn at_every_chunk_boundary<M: Checked>(model: &str, m: &M) {
     }
 }
 
+/// Short batches through the plain loops (one loop over the lanes, run by the CPU's vectors
+/// where there are enough lanes for them and by the scalar code for the rest): every length
+/// from 0 to 40 lanes and a few past it, so that batches shorter than one vector, of exactly
+/// one or several, and with every remainder of the 8 and 16 lanes of the AVX2 and AVX-512
+/// loops equal the scalar calls lane by lane, bit for bit.
+#[test]
+fn short_batches_equal_the_scalar_path_at_every_length() {
+    let gold = common::gold();
+    let rgb = Vec3::new(0.8, 0.5, 0.2);
+    let glass = Eta::new(1.5).unwrap();
+    let conductor = Microfacet::new(
+        Ggx::isotropic(a(0.3)),
+        Masking::HeightCorrelated,
+        Conductor { ior: gold },
+    );
+    let rough_glass = RoughDielectric::new(Ggx::isotropic(a(0.3)), glass);
+    let lengths = (0..=40).chain([63, 64, 65, 100]);
+    for n in lengths {
+        compare_lanes(
+            &format!("Lambert, {n} lanes"),
+            &Lambert::new(rgb).unwrap(),
+            true,
+            n,
+        );
+        compare_lanes(&format!("GGX gold, {n} lanes"), &conductor, true, n);
+        compare_lanes(&format!("rough glass, {n} lanes"), &rough_glass, true, n);
+        let glazed = Glazed::new(rgb, glass).unwrap();
+        compare_lanes(&format!("Glazed, {n} lanes"), &glazed, true, n);
+    }
+}
+
 /// The instruction set the batched calls ran on is the one this CPU's features call for (the
 /// x86-64-v4 and v3 levels as the dispatch defines them; checked on x86_64), and is printed,
 /// so that a log shows which path the bit-for-bit checks above covered. CI runs this file

@@ -1,7 +1,7 @@
 //! The batched loops and their run-time dispatch.
 
 use super::SampleOut;
-use super::lanes::{Lanes, Vec2s, Vec3s, Vec3sMut};
+use super::lanes::{Lanes, Vec2s, Vec3s};
 use crate::bxdf::{BxdfSample, Lobes, Prepare};
 use crate::spectrum::Spectrum;
 use core::marker::PhantomData;
@@ -13,7 +13,11 @@ use glam::{Vec2, Vec3};
 /// bounds, and runs the model from a local clone, so that the compiler sees that no store of
 /// the loop changes the model's parameters and that reading them is always safe: through a
 /// reference, a parameter read on only some lanes (after a lane's early return) is
-/// vectorised as a masked gather from one address per iteration.
+/// vectorised as a masked gather from one address per iteration. Its loop takes each output
+/// slice as an argument of its own (`pair_lanes`, `sample_lanes`): a `&mut` slice passed so is
+/// known to overlap no other, while an output read out of a struct is compared with every
+/// input at run time before the vectorised loop, which short batches then skip
+/// (`docs/batched-loops.md`, rule 10).
 pub(crate) trait Kernel {
     /// The loop.
     fn run(self);
@@ -105,13 +109,62 @@ where
 {
     #[inline(always)]
     fn run(self) {
-        let n = self.n;
-        let (wo, wi) = (cut(self.wo, n), cut(self.wi, n));
-        let mut f = M::Spectrum::truncate(self.f, n);
-        let m = self.m.clone();
-        for k in 0..n {
-            M::Spectrum::put(&mut f, k, O::eval(&m, wo.get(k), wi.get(k)));
-        }
+        let (wo, wi, m) = (self.wo, self.wi, self.m.clone());
+        pair_lanes::<M, Value<O>>(&m, self.n, wo, wi, self.f);
+    }
+}
+
+/// What a loop over pairs `(wo, wi)` computes per lane: [`EvalKernel`]'s value or
+/// [`PdfKernel`]'s density.
+trait PairOp<M> {
+    /// The lane's result.
+    type Out: Lanes;
+    /// The result for `wo` and `wi`.
+    fn lane(m: &M, wo: Vec3, wi: Vec3) -> Self::Out;
+}
+
+/// [`LaneOp::eval`] as a [`PairOp`].
+struct Value<O>(PhantomData<O>);
+
+impl<M: Prepare, O: LaneOp<M>> PairOp<M> for Value<O>
+where
+    M::Spectrum: Lanes,
+{
+    type Out = M::Spectrum;
+
+    #[inline(always)]
+    fn lane(m: &M, wo: Vec3, wi: Vec3) -> M::Spectrum {
+        O::eval(m, wo, wi)
+    }
+}
+
+/// [`LaneOp::pdf`] as a [`PairOp`].
+struct Density<O>(PhantomData<O>);
+
+impl<M: Prepare, O: LaneOp<M>> PairOp<M> for Density<O> {
+    type Out = f32;
+
+    #[inline(always)]
+    fn lane(m: &M, wo: Vec3, wi: Vec3) -> f32 {
+        O::pdf(m, wo, wi)
+    }
+}
+
+/// The loop of [`EvalKernel`] and [`PdfKernel`] over the first `n` lanes (every slice has at
+/// least `n`). Its output is an argument, where the compiler knows that it overlaps no other
+/// slice (see [`Kernel`]).
+#[inline(always)]
+fn pair_lanes<M, P: PairOp<M>>(
+    m: &M,
+    n: usize,
+    wo: Vec3s<'_>,
+    wi: Vec3s<'_>,
+    out: <P::Out as Lanes>::Mut<'_>,
+) {
+    let (wo, wi) = (cut(wo, n), cut(wi, n));
+    let mut out = P::Out::truncate(out, n);
+    for k in 0..n {
+        P::Out::put(&mut out, k, P::lane(m, wo.get(k), wi.get(k)));
     }
 }
 
@@ -128,12 +181,8 @@ pub(crate) struct PdfKernel<'a, 'f, M, O> {
 impl<M: Prepare + Clone, O: LaneOp<M>> Kernel for PdfKernel<'_, '_, M, O> {
     #[inline(always)]
     fn run(self) {
-        let n = self.n;
-        let (wo, wi) = (cut(self.wo, n), cut(self.wi, n));
-        let m = self.m.clone();
-        for (k, pdf) in self.pdf[..n].iter_mut().enumerate() {
-            *pdf = O::pdf(&m, wo.get(k), wi.get(k));
-        }
+        let (wo, wi, m) = (self.wo, self.wi, self.m.clone());
+        pair_lanes::<M, Density<O>>(&m, self.n, wo, wi, self.pdf);
     }
 }
 
@@ -158,13 +207,7 @@ where
 {
     #[inline(always)]
     fn run(self) {
-        let n = self.n;
-        let wo = cut(self.wo, n);
-        let u = Vec2s {
-            x: &self.u.x[..n],
-            y: &self.u.y[..n],
-        };
-        let uc = &self.uc[..n];
+        let (wo, u, m) = (self.wo, self.u, self.m.clone());
         let SampleOut {
             wi,
             f,
@@ -172,19 +215,46 @@ where
             lobe,
             eta,
         } = self.out;
-        let (mut wi, mut f): (Vec3sMut<'_>, _) = (wi.truncate(n), M::Spectrum::truncate(f, n));
-        let (pdf, lobe, eta) = (&mut pdf[..n], &mut lobe[..n], &mut eta[..n]);
-        let m = self.m.clone();
-        for k in 0..n {
-            let (w, v, p, l, e) = match O::sample(&m, wo.get(k), u.get(k), uc[k]) {
-                Some(s) => (s.wi, s.f, s.pdf, s.lobe, s.eta),
-                None => (Vec3::ZERO, M::Spectrum::zero(), 0.0, Lobes::NONE, 0.0),
-            };
-            wi.put(k, w);
-            M::Spectrum::put(&mut f, k, v);
-            pdf[k] = p;
-            lobe[k] = l;
-            eta[k] = e;
-        }
+        let (ix, iy, iz) = (wi.x, wi.y, wi.z);
+        sample_lanes::<M, O>(&m, self.n, wo, u, self.uc, ix, iy, iz, f, pdf, lobe, eta);
+    }
+}
+
+/// [`SampleKernel`]'s loop over the first `n` lanes, its output slices one to an argument
+/// (see [`pair_lanes`]).
+#[inline(always)]
+#[allow(clippy::too_many_arguments)] // the point: one output slice to an argument
+fn sample_lanes<M: Prepare, O: LaneOp<M>>(
+    m: &M,
+    n: usize,
+    wo: Vec3s<'_>,
+    u: Vec2s<'_>,
+    uc: &[f32],
+    ix: &mut [f32],
+    iy: &mut [f32],
+    iz: &mut [f32],
+    f: <M::Spectrum as Lanes>::Mut<'_>,
+    pdf: &mut [f32],
+    lobe: &mut [Lobes],
+    eta: &mut [f32],
+) where
+    M::Spectrum: Lanes,
+{
+    let (wo, u, uc) = (cut(wo, n), u.range(0, n), &uc[..n]);
+    let (ix, iy, iz) = (&mut ix[..n], &mut iy[..n], &mut iz[..n]);
+    let mut f = M::Spectrum::truncate(f, n);
+    let (pdf, lobe, eta) = (&mut pdf[..n], &mut lobe[..n], &mut eta[..n]);
+    // Counted: a loop over `uc.iter().enumerate()` kept the bounds checks of the other slices,
+    // whose exit forced a scalar epilogue of up to 8 lanes (`docs/batched-loops.md`, rule 10).
+    for k in 0..n {
+        let (w, v, p, l, e) = match O::sample(m, wo.get(k), u.get(k), uc[k]) {
+            Some(s) => (s.wi, s.f, s.pdf, s.lobe, s.eta),
+            None => (Vec3::ZERO, M::Spectrum::zero(), 0.0, Lobes::NONE, 0.0),
+        };
+        (ix[k], iy[k], iz[k]) = (w.x, w.y, w.z);
+        M::Spectrum::put(&mut f, k, v);
+        pdf[k] = p;
+        lobe[k] = l;
+        eta[k] = e;
     }
 }
