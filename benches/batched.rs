@@ -6,7 +6,13 @@
 //! cargo bench --bench batched            # every model
 //! cargo bench --bench batched -- Mix     # the models whose name contains "Mix"
 //! cargo bench --bench batched -- --test  # one short round (CI runs every bench so)
+//! cargo bench --bench batched -- --lanes 16  # batched calls of 16 lanes each
 //! ```
+//!
+//! With `--lanes L`, every batched kernel passes the 4,096 inputs in calls of `L` lanes (the
+//! last call shorter where `L` does not divide 4,096), as a renderer that sorts a wavefront
+//! by material would: a batch of tens of lanes pays for the call and for the lanes that do
+//! not fill the last vector.
 //!
 //! Each round times every kernel once, in turn (scalar `eval`, batched `eval`, scalar `pdf`,
 //! … of one model, then the next model's), so that the machine's drift falls on all of them
@@ -35,6 +41,7 @@ use lobe::fresnel::{Conductor, Dielectric, Schlick};
 use lobe::microfacet::{Beckmann, Ggx, Masking};
 use lobe::{Alpha, Eta, Roughness, Vec3, metals};
 use std::hint::black_box;
+use std::ops::Range;
 use std::time::Duration;
 
 /// Three coordinate slices.
@@ -65,6 +72,7 @@ trait Store: Lanes {
     type Owned;
     fn zeros() -> Self::Owned;
     fn lanes_mut(o: &mut Self::Owned) -> Self::Mut<'_>;
+    fn part<'a>(o: Self::Mut<'a>, r: Range<usize>) -> Self::Mut<'a>;
 }
 
 impl Store for f32 {
@@ -75,6 +83,9 @@ impl Store for f32 {
     fn lanes_mut(o: &mut Vec<f32>) -> &mut [f32] {
         o
     }
+    fn part<'a>(o: Self::Mut<'a>, r: Range<usize>) -> Self::Mut<'a> {
+        &mut o[r]
+    }
 }
 
 impl Store for Vec3 {
@@ -84,6 +95,9 @@ impl Store for Vec3 {
     }
     fn lanes_mut(o: &mut Soa) -> Vec3sMut<'_> {
         o.view_mut()
+    }
+    fn part<'a>(o: Self::Mut<'a>, r: Range<usize>) -> Self::Mut<'a> {
+        part_mut(o, r)
     }
 }
 
@@ -116,13 +130,36 @@ impl Lanesets {
     }
 }
 
+/// Lanes `r` of three coordinate slices.
+fn part(v: Vec3s<'_>, r: Range<usize>) -> Vec3s<'_> {
+    let (x, y, z) = (&v.x[r.clone()], &v.y[r.clone()], &v.z[r]);
+    Vec3s { x, y, z }
+}
+
+/// Lanes `r` of three output slices.
+fn part_mut(v: Vec3sMut<'_>, r: Range<usize>) -> Vec3sMut<'_> {
+    let (x, y, z) = (&mut v.x[r.clone()], &mut v.y[r.clone()], &mut v.z[r]);
+    Vec3sMut { x, y, z }
+}
+
+/// The calls of `lanes` lanes (at most) that cover the inputs.
+fn calls(lanes: usize) -> impl Iterator<Item = Range<usize>> {
+    (0..N).step_by(lanes).map(move |s| s..(s + lanes).min(N))
+}
+
 /// A model both paths take, with one spectrum.
 trait Timed: Batch<Spectrum: Store> + Bxdf<Spectrum = <Self as Prepare>::Spectrum> {}
 
 impl<M: Batch<Spectrum: Store> + Bxdf<Spectrum = <M as Prepare>::Spectrum>> Timed for M {}
 
-/// The six kernels of one model: scalar and batched `eval`, `pdf` and `sample`.
-fn kernels<'a, M: Timed + 'a>(name: &str, m: M, i: &'a Inputs, l: &'a Lanesets) -> Vec<Kernel<'a>> {
+/// The six kernels of one model: scalar and batched `eval`, `pdf` and `sample`, the batched
+/// ones in calls of `lanes` lanes.
+fn kernels<'a, M: Timed + 'a>(
+    name: &str,
+    m: M,
+    (i, l): (&'a Inputs, &'a Lanesets),
+    lanes: usize,
+) -> Vec<Kernel<'a>> {
     type S<M> = <M as Prepare>::Spectrum;
     let m = black_box(m);
     let (m1, m2, m3, m4, m5) = (m.clone(), m.clone(), m.clone(), m.clone(), m.clone());
@@ -137,8 +174,11 @@ fn kernels<'a, M: Timed + 'a>(name: &str, m: M, i: &'a Inputs, l: &'a Lanesets) 
             }
         }),
         Kernel::new(format!("{name}|eval|batched"), N, move || {
-            let out = S::<M>::lanes_mut(&mut f);
-            m2.eval_batch(l.wo.view(), l.wi.view(), out).unwrap();
+            for r in calls(lanes) {
+                let out = S::<M>::part(S::<M>::lanes_mut(&mut f), r.clone());
+                let (wo, wi) = (part(l.wo.view(), r.clone()), part(l.wi.view(), r));
+                m2.eval_batch(wo, wi, out).unwrap();
+            }
             black_box(&f);
         }),
         Kernel::new(format!("{name}|pdf|scalar"), N, move || {
@@ -147,7 +187,10 @@ fn kernels<'a, M: Timed + 'a>(name: &str, m: M, i: &'a Inputs, l: &'a Lanesets) 
             }
         }),
         Kernel::new(format!("{name}|pdf|batched"), N, move || {
-            m4.pdf_batch(l.wo.view(), l.wi.view(), &mut pdf).unwrap();
+            for r in calls(lanes) {
+                let (wo, wi) = (part(l.wo.view(), r.clone()), part(l.wi.view(), r.clone()));
+                m4.pdf_batch(wo, wi, &mut pdf[r]).unwrap();
+            }
             black_box(&pdf);
         }),
         Kernel::new(format!("{name}|sample|scalar"), N, move || {
@@ -156,14 +199,22 @@ fn kernels<'a, M: Timed + 'a>(name: &str, m: M, i: &'a Inputs, l: &'a Lanesets) 
             }
         }),
         Kernel::new(format!("{name}|sample|batched"), N, move || {
-            let out = SampleOut {
-                wi: wi.view_mut(),
-                f: S::<M>::lanes_mut(&mut sf),
-                pdf: &mut spdf,
-                lobe: &mut lobe,
-                eta: &mut eta,
-            };
-            m.sample_batch(l.wo.view(), l.u(), &l.uc, out).unwrap();
+            for r in calls(lanes) {
+                let out = SampleOut {
+                    wi: part_mut(wi.view_mut(), r.clone()),
+                    f: S::<M>::part(S::<M>::lanes_mut(&mut sf), r.clone()),
+                    pdf: &mut spdf[r.clone()],
+                    lobe: &mut lobe[r.clone()],
+                    eta: &mut eta[r.clone()],
+                };
+                let u = l.u();
+                let u = Vec2s {
+                    x: &u.x[r.clone()],
+                    y: &u.y[r.clone()],
+                };
+                m.sample_batch(part(l.wo.view(), r.clone()), u, &l.uc[r], out)
+                    .unwrap();
+            }
             black_box(&spdf);
         }),
     ]
@@ -177,11 +228,20 @@ fn main() {
     // `cargo bench` passes `--bench`; a further argument filters the models by name, and
     // `--test` (CI's smoke run of every bench) times one short round.
     let args: Vec<String> = std::env::args().skip(1).collect();
+    // The filter: the first argument that is neither a flag nor `--lanes`'s number.
     let filter = args
         .iter()
-        .find(|a| !a.starts_with("--"))
-        .cloned()
+        .enumerate()
+        .find(|&(p, a)| !a.starts_with("--") && (p == 0 || args[p - 1] != "--lanes"))
+        .map(|(_, a)| a.clone())
         .unwrap_or_default();
+    let lanes = match args.iter().position(|a| a == "--lanes") {
+        Some(p) => match args.get(p + 1).and_then(|l| l.parse::<usize>().ok()) {
+            Some(l) if l > 0 => l,
+            _ => panic!("--lanes wants a number of lanes per call, 1 or more"),
+        },
+        None => N,
+    };
     let (rounds, per_round) = if args.iter().any(|a| a == "--test") {
         (1, Duration::from_millis(1))
     } else {
@@ -209,7 +269,7 @@ fn main() {
     macro_rules! time {
         ($name:expr, $model:expr, $inputs:expr) => {
             if $name.contains(filter.as_str()) {
-                all.extend(kernels($name, $model, $inputs.0, $inputs.1));
+                all.extend(kernels($name, $model, $inputs, lanes));
             }
         };
     }
@@ -283,4 +343,5 @@ fn main() {
         );
     }
     println!("instruction set: {}", lobe::batch::instruction_set().name());
+    println!("batched calls of {} lanes", lanes.min(N));
 }
