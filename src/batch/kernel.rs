@@ -13,11 +13,11 @@ use glam::{Vec2, Vec3};
 /// bounds, and runs the model from a local clone, so that the compiler sees that no store of
 /// the loop changes the model's parameters and that reading them is always safe: through a
 /// reference, a parameter read on only some lanes (after a lane's early return) is
-/// vectorised as a masked gather from one address per iteration. Its loop takes each output
-/// slice as an argument of its own (`pair_lanes`, `sample_lanes`): a `&mut` slice passed so is
-/// known to overlap no other, while an output read out of a struct is compared with every
-/// input at run time before the vectorised loop, which short batches then skip
-/// (`docs/batched-loops.md`, rule 10).
+/// vectorised as a masked gather from one address per iteration. Its loop takes each slice as
+/// an argument of its own (`pair_lanes`, `sample_lanes`): slices passed so are known not to
+/// overlap, while an output read out of a struct is compared with every input at run time
+/// before the vectorised loop, which short batches then skip (`docs/batched-loops.md`,
+/// rule 10).
 pub(crate) trait Kernel {
     /// The loop.
     fn run(self);
@@ -110,7 +110,17 @@ where
     #[inline(always)]
     fn run(self) {
         let (wo, wi, m) = (self.wo, self.wi, self.m.clone());
-        pair_lanes::<M, Value<O>>(&m, self.n, wo, wi, self.f);
+        pair_lanes::<M, Value<O>>(&m, self.n, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, self.f);
+    }
+}
+
+/// The first `n` lanes of three coordinate slices.
+#[inline(always)]
+fn three<'a>(x: &'a [f32], y: &'a [f32], z: &'a [f32], n: usize) -> Vec3s<'a> {
+    Vec3s {
+        x: &x[..n],
+        y: &y[..n],
+        z: &z[..n],
     }
 }
 
@@ -151,17 +161,22 @@ impl<M: Prepare, O: LaneOp<M>> PairOp<M> for Density<O> {
 }
 
 /// The loop of [`EvalKernel`] and [`PdfKernel`] over the first `n` lanes (every slice has at
-/// least `n`). Its output is an argument, where the compiler knows that it overlaps no other
-/// slice (see [`Kernel`]).
+/// least `n`), every slice an argument of its own: the compiler then knows that the output
+/// overlaps no input (see [`Kernel`]).
 #[inline(always)]
+#[allow(clippy::too_many_arguments)] // the point: one slice to an argument
 fn pair_lanes<M, P: PairOp<M>>(
     m: &M,
     n: usize,
-    wo: Vec3s<'_>,
-    wi: Vec3s<'_>,
+    ox: &[f32],
+    oy: &[f32],
+    oz: &[f32],
+    ix: &[f32],
+    iy: &[f32],
+    iz: &[f32],
     out: <P::Out as Lanes>::Mut<'_>,
 ) {
-    let (wo, wi) = (cut(wo, n), cut(wi, n));
+    let (wo, wi) = (three(ox, oy, oz, n), three(ix, iy, iz, n));
     let mut out = P::Out::truncate(out, n);
     for k in 0..n {
         P::Out::put(&mut out, k, P::lane(m, wo.get(k), wi.get(k)));
@@ -182,7 +197,7 @@ impl<M: Prepare + Clone, O: LaneOp<M>> Kernel for PdfKernel<'_, '_, M, O> {
     #[inline(always)]
     fn run(self) {
         let (wo, wi, m) = (self.wo, self.wi, self.m.clone());
-        pair_lanes::<M, Density<O>>(&m, self.n, wo, wi, self.pdf);
+        pair_lanes::<M, Density<O>>(&m, self.n, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, self.pdf);
     }
 }
 
@@ -216,19 +231,24 @@ where
             eta,
         } = self.out;
         let (ix, iy, iz) = (wi.x, wi.y, wi.z);
-        sample_lanes::<M, O>(&m, self.n, wo, u, self.uc, ix, iy, iz, f, pdf, lobe, eta);
+        sample_lanes::<M, O>(
+            &m, self.n, wo.x, wo.y, wo.z, u.x, u.y, self.uc, ix, iy, iz, f, pdf, lobe, eta,
+        );
     }
 }
 
-/// [`SampleKernel`]'s loop over the first `n` lanes, its output slices one to an argument
-/// (see [`pair_lanes`]).
+/// [`SampleKernel`]'s loop over the first `n` lanes, every slice an argument of its own (see
+/// [`pair_lanes`]).
 #[inline(always)]
-#[allow(clippy::too_many_arguments)] // the point: one output slice to an argument
+#[allow(clippy::too_many_arguments)] // the point: one slice to an argument
 fn sample_lanes<M: Prepare, O: LaneOp<M>>(
     m: &M,
     n: usize,
-    wo: Vec3s<'_>,
-    u: Vec2s<'_>,
+    ox: &[f32],
+    oy: &[f32],
+    oz: &[f32],
+    ux: &[f32],
+    uy: &[f32],
     uc: &[f32],
     ix: &mut [f32],
     iy: &mut [f32],
@@ -240,7 +260,14 @@ fn sample_lanes<M: Prepare, O: LaneOp<M>>(
 ) where
     M::Spectrum: Lanes,
 {
-    let (wo, u, uc) = (cut(wo, n), u.range(0, n), &uc[..n]);
+    let wo = three(ox, oy, oz, n);
+    let (u, uc) = (
+        Vec2s {
+            x: &ux[..n],
+            y: &uy[..n],
+        },
+        &uc[..n],
+    );
     let (ix, iy, iz) = (&mut ix[..n], &mut iy[..n], &mut iz[..n]);
     let mut f = M::Spectrum::truncate(f, n);
     let (pdf, lobe, eta) = (&mut pdf[..n], &mut lobe[..n], &mut eta[..n]);
