@@ -45,7 +45,10 @@
 //! finite, non-negative answer, the scalar path's.
 //!
 //! **Speed.** The loops are written so that the compiler vectorises them: inputs and outputs
-//! are separate slices re-sliced to one length (no bounds checks inside the loop), the
+//! are separate slices re-sliced to one length (no bounds checks inside the loop) and passed
+//! to the loop one to an argument (so that the compiler knows no two overlap, checks nothing
+//! at run time and vectorises from 8 lanes on: a call of 16 lanes runs at 0.2–0.4× of the
+//! scalar calls for the GGX conductor, `cargo bench --bench batched -- --lanes 16`), the
 //! per-lane code is inlined, its early returns become selects, and what the loop would
 //! branch on per call (a microfacet model's masking term) is fixed outside it. Each loop
 //! runs on its own copy of the model (a clone per batched call, hence [`Batch`]'s `Clone`
