@@ -70,8 +70,11 @@ impl Soa {
 /// A spectrum's output slices, owned.
 trait Store: Lanes {
     type Owned;
+    /// `N` lanes of zeros.
     fn zeros() -> Self::Owned;
+    /// All the lanes, as a batched call's output.
     fn lanes_mut(o: &mut Self::Owned) -> Self::Mut<'_>;
+    /// Lanes `r` of an output.
     fn part<'a>(o: Self::Mut<'a>, r: Range<usize>) -> Self::Mut<'a>;
 }
 
@@ -235,6 +238,9 @@ fn main() {
         .find(|&(p, a)| !a.starts_with("--") && (p == 0 || args[p - 1] != "--lanes"))
         .map(|(_, a)| a.clone())
         .unwrap_or_default();
+    if let Some(a) = args.iter().find(|a| a.starts_with("--lanes=")) {
+        panic!("{a}: write `--lanes L`, with a space");
+    }
     let lanes = match args.iter().position(|a| a == "--lanes") {
         Some(p) => match args.get(p + 1).and_then(|l| l.parse::<usize>().ok()) {
             Some(l) if l > 0 => l,

@@ -78,11 +78,12 @@ impl Soa {
             z: v.iter().map(|w| w.z).collect(),
         }
     }
-    fn zeros(n: usize) -> Self {
+    /// `n` lanes of [`UNWRITTEN`].
+    fn unwritten(n: usize) -> Self {
         Self {
-            x: vec![0.0; n],
-            y: vec![0.0; n],
-            z: vec![0.0; n],
+            x: vec![UNWRITTEN; n],
+            y: vec![UNWRITTEN; n],
+            z: vec![UNWRITTEN; n],
         }
     }
     fn view(&self) -> Vec3s<'_> {
@@ -104,9 +105,15 @@ impl Soa {
     }
 }
 
+/// What the output buffers hold before a batched call: a NaN whose bits no lane computes, so
+/// that a lane the loop skipped differs, bit for bit, from the scalar call's answer (which is
+/// often `+0`).
+const UNWRITTEN: f32 = f32::from_bits(0x7fc0_beef);
+
 /// A spectrum's batched output buffers, readable per lane.
 trait Buffers: Lanes + Spectrum {
     type Store;
+    /// `n` lanes of [`UNWRITTEN`].
     fn store(n: usize) -> Self::Store;
     fn lanes_mut(s: &mut Self::Store) -> Self::Mut<'_>;
     fn read(s: &Self::Store, k: usize) -> Self;
@@ -115,7 +122,7 @@ trait Buffers: Lanes + Spectrum {
 impl Buffers for f32 {
     type Store = Vec<f32>;
     fn store(n: usize) -> Vec<f32> {
-        vec![0.0; n]
+        vec![UNWRITTEN; n]
     }
     fn lanes_mut(s: &mut Vec<f32>) -> &mut [f32] {
         s
@@ -128,7 +135,7 @@ impl Buffers for f32 {
 impl Buffers for Vec3 {
     type Store = Soa;
     fn store(n: usize) -> Soa {
-        Soa::zeros(n)
+        Soa::unwritten(n)
     }
     fn lanes_mut(s: &mut Soa) -> Vec3sMut<'_> {
         s.view_mut()
@@ -139,7 +146,7 @@ impl Buffers for Vec3 {
 }
 
 /// Equal bit for bit, channel by channel: `-0` and `+0` differ (and a NaN equals only a NaN
-/// of the same bits, though no lane has one).
+/// of the same bits: no lane computes one, and [`UNWRITTEN`] marks a lane not written).
 fn same<S: Spectrum>(a: S, b: S) -> bool {
     (0..S::CHANNELS).all(|c| a.channel(c).to_bits() == b.channel(c).to_bits())
 }
@@ -210,9 +217,9 @@ fn compare_lanes<M: Checked>(
     let mut f = S::<M>::store(n);
     m.eval_batch(wo.view(), wi.view(), S::<M>::lanes_mut(&mut f))
         .unwrap();
-    let mut pdf = vec![0.0; n];
+    let mut pdf = vec![UNWRITTEN; n];
     m.pdf_batch(wo.view(), wi.view(), &mut pdf).unwrap();
-    let (mut swi, mut sf, mut spdf) = (Soa::zeros(n), S::<M>::store(n), vec![0.0; n]);
+    let (mut swi, mut sf, mut spdf) = (Soa::unwritten(n), S::<M>::store(n), vec![UNWRITTEN; n]);
     // Filled with values no lane writes, so that a lane the loop skipped shows.
     let (mut slobe, mut seta) = (vec![Lobes::SPECULAR_TRANSMISSION; n], vec![-1.0; n]);
     m.sample_batch(
@@ -232,7 +239,7 @@ fn compare_lanes<M: Checked>(
     let mut at_f = S::<M>::store(n);
     m.eval_batch(wo.view(), swi.view(), S::<M>::lanes_mut(&mut at_f))
         .unwrap();
-    let mut at_pdf = vec![0.0; n];
+    let mut at_pdf = vec![UNWRITTEN; n];
     m.pdf_batch(wo.view(), swi.view(), &mut at_pdf).unwrap();
     let mut non_specular = 0;
 
@@ -518,7 +525,7 @@ fn refuses_without_writing<M: Batch<Spectrum = f32>>(name: &str, m: &M) {
     for n in [4, 0] {
         let wo = Soa::of(&vec![Vec3::Z; n]);
         let (half, uc) = (vec![0.5; n], vec![0.5; n.saturating_sub(1)]);
-        let (mut swi, mut lobe) = (Soa::zeros(n), vec![Lobes::NONE; n]);
+        let (mut swi, mut lobe) = (Soa::unwritten(n), vec![Lobes::NONE; n]);
         let (mut f, mut pdf, mut eta) = (vec![-1.0; n], vec![-1.0; n], vec![-1.0; n]);
         let out = SampleOut {
             wi: swi.view_mut(),

@@ -8,16 +8,17 @@ use core::marker::PhantomData;
 use glam::{Vec2, Vec3};
 
 /// A loop to compile for the widest SIMD the CPU has. `run` must be `#[inline(always)]`, so
-/// that it is compiled inside the dispatcher's `#[target_feature]` function, must re-slice
-/// its inputs to one length itself, so that the compiler sees that every index is in
-/// bounds, and runs the model from a local clone, so that the compiler sees that no store of
-/// the loop changes the model's parameters and that reading them is always safe: through a
-/// reference, a parameter read on only some lanes (after a lane's early return) is
-/// vectorised as a masked gather from one address per iteration. Its loop takes each slice as
-/// an argument of its own (`pair_lanes`, `sample_lanes`): slices passed so are known not to
-/// overlap, while an output read out of a struct is compared with every input at run time
-/// before the vectorised loop, which short batches then skip (`docs/batched-loops.md`,
-/// rule 10).
+/// that it is compiled inside the dispatcher's `#[target_feature]` function, must re-slice its
+/// inputs to one length itself (or in an `#[inline(always)]` function it calls), so that the
+/// compiler sees that every index is in bounds, and runs the model from a local clone, so that
+/// the compiler sees that no store of the loop changes the model's parameters and that reading
+/// them is always safe: through a reference, a parameter read on only some lanes (after a
+/// lane's early return) is vectorised as a masked gather from one address per iteration. Its
+/// loop takes each slice as an argument of its own (`pair_lanes`, `sample_lanes`): slices
+/// passed so are known not to overlap, while an output read out of a struct is compared with
+/// every input at run time before the vectorised loop, which short batches then skip
+/// (`docs/batched-loops.md`, rule 10; a spectrum's output channels, one `Lanes::Mut` value, are
+/// still compared with each other).
 pub(crate) trait Kernel {
     /// The loop.
     fn run(self);
@@ -96,11 +97,7 @@ where
 /// Re-slices a [`Vec3s`] to `n` lanes, in the loop's own function.
 #[inline(always)]
 pub(super) fn cut(v: Vec3s<'_>, n: usize) -> Vec3s<'_> {
-    Vec3s {
-        x: &v.x[..n],
-        y: &v.y[..n],
-        z: &v.z[..n],
-    }
+    three(v.x, v.y, v.z, n)
 }
 
 impl<M: Prepare + Clone, O: LaneOp<M>> Kernel for EvalKernel<'_, '_, M, O>
