@@ -97,7 +97,7 @@ where
 /// Re-slices a [`Vec3s`] to `n` lanes, in the loop's own function.
 #[inline(always)]
 pub(super) fn cut(v: Vec3s<'_>, n: usize) -> Vec3s<'_> {
-    three(v.x, v.y, v.z, n)
+    v.range(0, n)
 }
 
 impl<M: Prepare + Clone, O: LaneOp<M>> Kernel for EvalKernel<'_, '_, M, O>
@@ -108,16 +108,6 @@ where
     fn run(self) {
         let (wo, wi, m) = (self.wo, self.wi, self.m.clone());
         pair_lanes::<M, Value<O>>(&m, self.n, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, self.f);
-    }
-}
-
-/// The first `n` lanes of three coordinate slices.
-#[inline(always)]
-fn three<'a>(x: &'a [f32], y: &'a [f32], z: &'a [f32], n: usize) -> Vec3s<'a> {
-    Vec3s {
-        x: &x[..n],
-        y: &y[..n],
-        z: &z[..n],
     }
 }
 
@@ -173,7 +163,18 @@ fn pair_lanes<M, P: PairOp<M>>(
     iz: &[f32],
     out: <P::Out as Lanes>::Mut<'_>,
 ) {
-    let (wo, wi) = (three(ox, oy, oz, n), three(ix, iy, iz, n));
+    let wo = Vec3s {
+        x: ox,
+        y: oy,
+        z: oz,
+    }
+    .range(0, n);
+    let wi = Vec3s {
+        x: ix,
+        y: iy,
+        z: iz,
+    }
+    .range(0, n);
     let mut out = P::Out::truncate(out, n);
     for k in 0..n {
         P::Out::put(&mut out, k, P::lane(m, wo.get(k), wi.get(k)));
@@ -257,14 +258,13 @@ fn sample_lanes<M: Prepare, O: LaneOp<M>>(
 ) where
     M::Spectrum: Lanes,
 {
-    let wo = three(ox, oy, oz, n);
-    let (u, uc) = (
-        Vec2s {
-            x: &ux[..n],
-            y: &uy[..n],
-        },
-        &uc[..n],
-    );
+    let wo = Vec3s {
+        x: ox,
+        y: oy,
+        z: oz,
+    }
+    .range(0, n);
+    let (u, uc) = (Vec2s { x: ux, y: uy }.range(0, n), &uc[..n]);
     let (ix, iy, iz) = (&mut ix[..n], &mut iy[..n], &mut iz[..n]);
     let mut f = M::Spectrum::truncate(f, n);
     let (pdf, lobe, eta) = (&mut pdf[..n], &mut lobe[..n], &mut eta[..n]);
