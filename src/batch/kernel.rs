@@ -94,12 +94,6 @@ where
     pub(super) op: PhantomData<O>,
 }
 
-/// Re-slices a [`Vec3s`] to `n` lanes, in the loop's own function.
-#[inline(always)]
-pub(super) fn cut(v: Vec3s<'_>, n: usize) -> Vec3s<'_> {
-    v.range(0, n)
-}
-
 impl<M: Prepare + Clone, O: LaneOp<M>> Kernel for EvalKernel<'_, '_, M, O>
 where
     M::Spectrum: Lanes,

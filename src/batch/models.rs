@@ -245,7 +245,7 @@ impl<D: NormalDistribution, F: FresnelAverage> TableSample for CompensatedMicrof
     }
 
     #[inline(always)]
-    fn finish(&self, f: F::Spectrum, outgoing: F::Spectrum, e_wi: f32) -> F::Spectrum {
+    fn finish(&self, f: F::Spectrum, outgoing: F::Spectrum, _: f32, e_wi: f32) -> F::Spectrum {
         CompensatedMicrofacet::finish(self, f, outgoing, e_wi)
     }
 }
@@ -302,15 +302,15 @@ batch_by!(impl<D: NormalDistribution + Clone, F: FresnelAverage>
 /// side: its loops look them up a chunk of lanes at a time (both sides' rows, then a select),
 /// with the masking term fixed.
 impl<D: NormalDistribution> TableLanes for CompensatedDielectric<D> {
-    type Looked = (f32, f32);
+    type Looked = f32;
 
     #[inline(always)]
-    fn look_up(&self, z: &[f32], e: &mut [(f32, f32); CHUNK]) {
+    fn look_up(&self, z: &[f32], e: &mut [f32; CHUNK]) {
         self.albedo().e_chunk(z, e);
     }
 
     #[inline(always)]
-    fn prepare_from(&self, wo: Vec3, (e_wo, _): (f32, f32)) -> Self::Prepared {
+    fn prepare_from(&self, wo: Vec3, e_wo: f32) -> Self::Prepared {
         self.prepare_given(wo, || e_wo)
     }
 
@@ -329,8 +329,8 @@ impl<D: NormalDistribution> TableSample for CompensatedDielectric<D> {
     }
 
     #[inline(always)]
-    fn finish(&self, f: f32, outgoing: (f32, f32), e_wi: (f32, f32)) -> f32 {
-        CompensatedDielectric::finish(self, f, outgoing, e_wi)
+    fn finish(&self, f: f32, outgoing: (f32, f32), wi_z: f32, e_wi: f32) -> f32 {
+        CompensatedDielectric::finish(self, f, outgoing, wi_z, e_wi)
     }
 }
 
@@ -340,7 +340,7 @@ impl<const K: usize, D: NormalDistribution> TableOp<CompensatedDielectric<D>> fo
         m: &CompensatedDielectric<D>,
         at: &CompensatedState<At<View>, f32>,
         wi: Vec3,
-        (e_wi, _): (f32, f32),
+        e_wi: f32,
     ) -> f32 {
         m.eval_lane(at, wi, e_wi, MASKINGS[K])
     }
@@ -454,7 +454,7 @@ impl<D: NormalDistribution, S: Spectrum> TableSample for Plastic<D, S> {
     }
 
     #[inline(always)]
-    fn finish(&self, f: S, t_o: f32, e_wi: f32) -> S {
+    fn finish(&self, f: S, t_o: f32, _: f32, e_wi: f32) -> S {
         Plastic::finish(self, f, t_o, e_wi)
     }
 }
@@ -523,7 +523,7 @@ impl<D: NormalDistribution, S: Spectrum> TableSample for CompensatedPlastic<D, S
     }
 
     #[inline(always)]
-    fn finish(&self, f: S, outgoing: (f32, f32), e_wi: (f32, f32)) -> S {
+    fn finish(&self, f: S, outgoing: (f32, f32), _: f32, e_wi: (f32, f32)) -> S {
         self.finish_compensated(f, outgoing, e_wi)
     }
 }

@@ -11,19 +11,24 @@
 //! the figures). The numbers are those of the scalar path: the same lookups, the same
 //! arithmetic, in another order of passes.
 //!
+//! Each chunk's loop takes its slices one to an argument, counts its lanes, and reads every
+//! member of the buffers it reads (`docs/batched-loops.md`, rules 10 and 11): a short batch
+//! then runs in the vectorised loop rather than in the scalar code beside it.
+//!
 //! The chunk's buffers live on the stack: up to 14 KiB for a `Vec4` compensated plastic's
 //! `sample` (two tables' values per lane, and its lookups' temporaries), 11 KiB for a `Vec4`
 //! compensated conductor's, 5 KiB for an `f32` one's; zeroed on every call, so a batch of a
 //! few lanes pays for that, one of 256 or more does not notice it.
 
-use super::kernel::{EvalKernel, Kernel, PdfKernel, SampleKernel, cut};
-use super::lanes::{Lanes, Vec2s, Vec3sMut};
+use super::kernel::{EvalKernel, Kernel, PdfKernel, SampleKernel};
+use super::lanes::{Lanes, Vec2s, Vec3s, Vec3sMut};
 use super::{LengthError, SampleOut};
 use crate::bxdf::{BxdfSample, Lobes, Prepare};
 use crate::spectrum::Spectrum;
 #[cfg(doc)]
 use crate::tables::AlbedoRow;
 use crate::tables::CHUNK;
+use core::marker::PhantomData;
 use glam::{Vec2, Vec3};
 
 /// A lane's entry in a chunk's buffer, and what fills the buffer before the lanes do.
@@ -72,11 +77,13 @@ pub(crate) trait TableSample: TableLanes {
     /// That part of the prepared state.
     fn outgoing(at: &Self::Prepared) -> Self::Outgoing;
     /// An unfinished sample's value, from its value `f` as drawn, what it needs of the
-    /// prepared state, and the tables' values `e_wi` at the sampled direction.
+    /// prepared state, and the sampled direction's `wi_z = cos θi` (the glass reads the side
+    /// from it) and tables' values `e_wi` there.
     fn finish(
         &self,
         f: Self::Spectrum,
         outgoing: Self::Outgoing,
+        wi_z: f32,
         e_wi: Self::Looked,
     ) -> Self::Spectrum;
 }
@@ -116,22 +123,93 @@ where
     #[inline(always)]
     fn run(self) {
         let EvalKernel {
-            m, wo, wi, f, n, ..
+            m,
+            wo,
+            wi,
+            mut f,
+            n,
+            ..
         } = self.0;
-        let (wo, wi) = (cut(wo, n), cut(wi, n));
-        let mut f = M::Spectrum::truncate(f, n);
         let m = m.clone();
         let placeholder = M::Looked::placeholder();
         let (mut e_wo, mut e_wi) = ([placeholder; CHUNK], [placeholder; CHUNK]);
         for (start, end) in chunks(n) {
-            m.look_up(&wo.z[start..end], &mut e_wo);
-            m.look_up(&wi.z[start..end], &mut e_wi);
-            for (k, (&e_wo, &e_wi)) in (start..end).zip(e_wo.iter().zip(&e_wi)) {
-                let at = m.prepare_from(wo.get(k), e_wo);
-                M::Spectrum::put(&mut f, k, O::eval(&m, &at, wi.get(k), e_wi));
-            }
+            let (wo, wi) = (wo.range(start, end), wi.range(start, end));
+            m.look_up(wo.z, &mut e_wo);
+            m.look_up(wi.z, &mut e_wi);
+            let f = M::Spectrum::lanes_of(&mut f, start, end);
+            let (o, i) = (wo, wi);
+            pair_chunk::<M, Value<O>>(&m, o.x, o.y, o.z, &e_wo, i.x, i.y, i.z, &e_wi, f);
         }
     }
+}
+
+/// What [`Chunked`] `eval` and `pdf` compute per lane from the prepared state: a
+/// [`TableOp`]'s value, or [`TableLanes::pdf_lane`]'s density ([`Density`]).
+trait ChunkPair<M: TableLanes> {
+    /// The lane's result.
+    type Out: Lanes;
+    /// The result at `wi`, whose tables' values are `e_wi`.
+    fn lane(m: &M, at: &M::Prepared, wi: Vec3, e_wi: M::Looked) -> Self::Out;
+}
+
+/// A [`TableOp`]'s value.
+struct Value<O>(PhantomData<O>);
+
+impl<M: TableLanes, O: TableOp<M>> ChunkPair<M> for Value<O>
+where
+    M::Spectrum: Lanes,
+{
+    type Out = M::Spectrum;
+
+    #[inline(always)]
+    fn lane(m: &M, at: &M::Prepared, wi: Vec3, e_wi: M::Looked) -> M::Spectrum {
+        O::eval(m, at, wi, e_wi)
+    }
+}
+
+/// The density of a lane, which reads no table at `wi`.
+struct Density;
+
+impl<M: TableLanes> ChunkPair<M> for Density {
+    type Out = f32;
+
+    #[inline(always)]
+    fn lane(m: &M, at: &M::Prepared, wi: Vec3, _: M::Looked) -> f32 {
+        m.pdf_lane(at, wi)
+    }
+}
+
+/// [`Chunked`] `eval`'s and `pdf`'s loop over one chunk, every slice an argument of its own
+/// (the generic loops' rule: `docs/batched-loops.md`, rule 10).
+#[inline(always)]
+#[allow(clippy::too_many_arguments)] // the point: one slice to an argument
+fn pair_chunk<M: TableLanes, P: ChunkPair<M>>(
+    m: &M,
+    ox: &[f32],
+    oy: &[f32],
+    oz: &[f32],
+    e_wo: &[M::Looked; CHUNK],
+    ix: &[f32],
+    iy: &[f32],
+    iz: &[f32],
+    e_wi: &[M::Looked; CHUNK],
+    out: <P::Out as Lanes>::Mut<'_>,
+) {
+    let n = ox.len().min(CHUNK);
+    let (wo, wi) = (lanes3(ox, oy, oz, n), lanes3(ix, iy, iz, n));
+    let (e_wo, e_wi) = (&e_wo[..n], &e_wi[..n]);
+    let mut out = P::Out::truncate(out, n);
+    for k in 0..n {
+        let at = m.prepare_from(wo.get(k), e_wo[k]);
+        P::Out::put(&mut out, k, P::lane(m, &at, wi.get(k), e_wi[k]));
+    }
+}
+
+/// The first `n` lanes of three slices, as a [`Vec3s`].
+#[inline(always)]
+fn lanes3<'a>(x: &'a [f32], y: &'a [f32], z: &'a [f32], n: usize) -> Vec3s<'a> {
+    Vec3s { x, y, z }.range(0, n)
 }
 
 /// `pdf[k] = pdf(wo[k], wi[k])` over the first `n` lanes, a chunk at a time.
@@ -141,15 +219,15 @@ impl<M: TableLanes + Clone> Kernel for Chunked<PdfKernel<'_, '_, M, ()>> {
         let PdfKernel {
             m, wo, wi, pdf, n, ..
         } = self.0;
-        let (wo, wi) = (cut(wo, n), cut(wi, n));
-        let pdf = &mut pdf[..n];
         let m = m.clone();
         let mut e_wo = [M::Looked::placeholder(); CHUNK];
         for (start, end) in chunks(n) {
-            m.look_up(&wo.z[start..end], &mut e_wo);
-            for (k, &e_wo) in (start..end).zip(&e_wo) {
-                pdf[k] = m.pdf_lane(&m.prepare_from(wo.get(k), e_wo), wi.get(k));
-            }
+            let (wo, wi) = (wo.range(start, end), wi.range(start, end));
+            m.look_up(wo.z, &mut e_wo);
+            let pdf = &mut pdf[start..end];
+            // `pdf` reads no table at `wi`: `e_wo` stands in for it, unread.
+            let (o, i) = (wo, wi);
+            pair_chunk::<M, Density>(&m, o.x, o.y, o.z, &e_wo, i.x, i.y, i.z, &e_wo, pdf);
         }
     }
 }
@@ -172,61 +250,142 @@ where
             n,
             ..
         } = self.0;
-        let wo = cut(wo, n);
-        let u = Vec2s {
-            x: &u.x[..n],
-            y: &u.y[..n],
-        };
-        let uc = &uc[..n];
         let SampleOut {
-            wi,
-            f,
+            mut wi,
+            mut f,
             pdf,
             lobe,
             eta,
         } = out;
-        let (mut wi, mut f): (Vec3sMut<'_>, _) = (wi.truncate(n), M::Spectrum::truncate(f, n));
-        let (pdf, lobe, eta) = (&mut pdf[..n], &mut lobe[..n], &mut eta[..n]);
         let m = m.clone();
         let placeholder = M::Looked::placeholder();
         let (mut e_wo, mut e_wi) = ([placeholder; CHUNK], [placeholder; CHUNK]);
-        // Per lane of the chunk: the value as drawn, what finishing it needs, and whether
-        // there is a sample.
-        let mut drawn = [M::Spectrum::zero(); CHUNK];
-        let mut outgoing = [M::Outgoing::placeholder(); CHUNK];
-        let mut sampled = [false; CHUNK];
+        let mut drawn = Drawn::<M> {
+            f: [M::Spectrum::zero(); CHUNK],
+            outgoing: [M::Outgoing::placeholder(); CHUNK],
+            sampled: [false; CHUNK],
+        };
         for (start, end) in chunks(n) {
-            m.look_up(&wo.z[start..end], &mut e_wo);
-            let kept = drawn.iter_mut().zip(&mut outgoing).zip(&mut sampled);
-            for (k, (&e_wo, ((drawn, outgoing), sampled))) in
-                (start..end).zip(e_wo.iter().zip(kept))
-            {
-                let at = m.prepare_from(wo.get(k), e_wo);
-                let (w, v, p, l, e) = match O::sample(&m, &at, u.get(k), uc[k]) {
-                    Some(s) => (s.wi, s.f, s.pdf, s.lobe, s.eta),
-                    None => (Vec3::ZERO, M::Spectrum::zero(), 0.0, Lobes::NONE, 0.0),
-                };
-                wi.put(k, w);
-                pdf[k] = p;
-                lobe[k] = l;
-                eta[k] = e;
-                (*drawn, *outgoing, *sampled) = (v, M::outgoing(&at), l != Lobes::NONE);
-            }
-            if !O::UNFINISHED {
-                for (k, &v) in (start..end).zip(&drawn) {
-                    M::Spectrum::put(&mut f, k, v);
-                }
-                continue;
-            }
-            m.look_up(&wi.z[start..end], &mut e_wi);
-            // Zipped, so that no index is checked; every lane finished and the value chosen
-            // after, so that the loop has no branch.
-            let lanes = drawn.iter().zip(&outgoing).zip(sampled.iter().zip(&e_wi));
-            for (k, ((&v, &o), (&s, &e))) in (start..end).zip(lanes) {
-                let finished = m.finish(v, o, e);
-                M::Spectrum::put(&mut f, k, if s { finished } else { v });
+            let (wo, u, uc) = (wo.range(start, end), u.range(start, end), &uc[start..end]);
+            m.look_up(wo.z, &mut e_wo);
+            let Vec3sMut {
+                x: ix,
+                y: iy,
+                z: iz,
+            } = wi.range(start, end);
+            let (pdf, lobe) = (&mut pdf[start..end], &mut lobe[start..end]);
+            let eta = &mut eta[start..end];
+            draw_chunk::<M, O>(
+                &m, wo.x, wo.y, wo.z, &e_wo, u.x, u.y, uc, pdf, lobe, eta, ix, iy, iz, &mut drawn,
+            );
+            let f = M::Spectrum::lanes_of(&mut f, start, end);
+            if O::UNFINISHED {
+                m.look_up(iz, &mut e_wi);
+                finish_chunk(&m, &drawn, iz, &e_wi, f);
+            } else {
+                copy_chunk::<M>(&drawn.f, f, end - start);
             }
         }
+    }
+}
+
+/// A chunk's samples as drawn, per lane: the value, what finishing it needs of the prepared
+/// state, and whether there is a sample.
+struct Drawn<M: TableSample> {
+    /// The values as drawn.
+    f: [M::Spectrum; CHUNK],
+    /// What [`TableSample::finish`] needs.
+    outgoing: [M::Outgoing; CHUNK],
+    /// Whether the lane has a sample.
+    sampled: [bool; CHUNK],
+}
+
+/// [`Chunked`] `sample`'s draws over one chunk, every slice an argument of its own: the
+/// densities, lobes, `η` and directions into the outputs, the values into `drawn`.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)] // the point: one slice to an argument
+fn draw_chunk<M: TableSample, O: TableSampleOp<M>>(
+    m: &M,
+    ox: &[f32],
+    oy: &[f32],
+    oz: &[f32],
+    e_wo: &[M::Looked; CHUNK],
+    ux: &[f32],
+    uy: &[f32],
+    uc: &[f32],
+    pdf: &mut [f32],
+    lobe: &mut [Lobes],
+    eta: &mut [f32],
+    ix: &mut [f32],
+    iy: &mut [f32],
+    iz: &mut [f32],
+    drawn: &mut Drawn<M>,
+) {
+    let n = ox.len().min(CHUNK);
+    let (wo, u, uc) = (
+        lanes3(ox, oy, oz, n),
+        Vec2s { x: ux, y: uy }.range(0, n),
+        &uc[..n],
+    );
+    let (ix, iy, iz) = (&mut ix[..n], &mut iy[..n], &mut iz[..n]);
+    let (pdf, lobe, eta, e_wo) = (&mut pdf[..n], &mut lobe[..n], &mut eta[..n], &e_wo[..n]);
+    let (f, outgoing, sampled) = (
+        &mut drawn.f[..n],
+        &mut drawn.outgoing[..n],
+        &mut drawn.sampled[..n],
+    );
+    for k in 0..n {
+        let at = m.prepare_from(wo.get(k), e_wo[k]);
+        let (w, v, p, l, e) = match O::sample(m, &at, u.get(k), uc[k]) {
+            Some(s) => (s.wi, s.f, s.pdf, s.lobe, s.eta),
+            None => (Vec3::ZERO, M::Spectrum::zero(), 0.0, Lobes::NONE, 0.0),
+        };
+        (ix[k], iy[k], iz[k]) = (w.x, w.y, w.z);
+        (pdf[k], lobe[k], eta[k]) = (p, l, e);
+        (f[k], outgoing[k], sampled[k]) = (v, M::outgoing(&at), l != Lobes::NONE);
+    }
+}
+
+/// The values of a chunk's unfinished samples, whose directions' `z` is `iz` and tables'
+/// values `e_wi`, into `f`: every lane finished and the value chosen after, so that the loop
+/// has no branch.
+#[inline(always)]
+fn finish_chunk<M: TableSample>(
+    m: &M,
+    drawn: &Drawn<M>,
+    iz: &[f32],
+    e_wi: &[M::Looked; CHUNK],
+    f: <M::Spectrum as Lanes>::Mut<'_>,
+) where
+    M::Spectrum: Lanes,
+{
+    let n = iz.len().min(CHUNK);
+    let (v, o, s, e) = (
+        &drawn.f[..n],
+        &drawn.outgoing[..n],
+        &drawn.sampled[..n],
+        &e_wi[..n],
+    );
+    let mut f = M::Spectrum::truncate(f, n);
+    for k in 0..n {
+        let finished = m.finish(v[k], o[k], iz[k], e[k]);
+        M::Spectrum::put(&mut f, k, if s[k] { finished } else { v[k] });
+    }
+}
+
+/// The values of a chunk's finished samples into `f`'s first `n` lanes.
+#[inline(always)]
+fn copy_chunk<M: TableSample>(
+    drawn: &[M::Spectrum; CHUNK],
+    f: <M::Spectrum as Lanes>::Mut<'_>,
+    n: usize,
+) where
+    M::Spectrum: Lanes,
+{
+    let n = n.min(CHUNK);
+    let mut f = M::Spectrum::truncate(f, n);
+    for (k, &v) in drawn[..n].iter().enumerate() {
+        M::Spectrum::put(&mut f, k, v);
     }
 }
 

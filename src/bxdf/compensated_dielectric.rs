@@ -429,10 +429,10 @@ impl<D: NormalDistribution> CompensatedDielectric<D> {
 
     /// A [`sample_unfinished`](Self::sample_unfinished)'s value `f` finished: plus the
     /// compensation lobes' value, for `wo` with `outgoing = (1 − E(μo), cos θo)`, at the
-    /// sampled direction with `e_wi = (E(μi) of its side, cos θi)`.
+    /// sampled direction with `cos θi = wi_z` and `e_wi = E(μi)` of its side.
     #[inline(always)]
-    pub(crate) fn finish(&self, f: f32, outgoing: (f32, f32), e_wi: (f32, f32)) -> f32 {
-        let ((outgoing, wo_z), (e_wi, wi_z)) = (outgoing, e_wi);
+    pub(crate) fn finish(&self, f: f32, outgoing: (f32, f32), wi_z: f32, e_wi: f32) -> f32 {
+        let (outgoing, wo_z) = outgoing;
         f + self.lobes_value(wo_z, outgoing, wi_z, e_wi)
     }
 }
@@ -478,7 +478,7 @@ impl<D: NormalDistribution> Prepare for CompensatedDielectric<D> {
         let s = self.sample_unfinished::<false>(at, u, uc, masking)?;
         let e_wi = self.albedo.row(s.wi.z).e(s.wi.z.abs());
         Some(BxdfSample {
-            f: self.finish(s.f, (at.outgoing, wo.z), (e_wi, s.wi.z)),
+            f: self.finish(s.f, (at.outgoing, wo.z), s.wi.z, e_wi),
             ..s
         })
     }

@@ -25,11 +25,11 @@ impl DielectricAlbedo {
         if z > 0.0 { &self.outside } else { &self.inside }
     }
 
-    /// `(row(z).e(|z|), z)` of every `z[k]`, into `e[k]` (at most [`CHUNK`] lanes): both rows
+    /// `row(z).e(|z|)` of every `z[k]`, into `e[k]` (at most [`CHUNK`] lanes): both rows
     /// looked up with [`AlbedoRow::e_chunk`], then each lane's side kept (a select), so that
     /// the numbers are [`row`](Self::row)'s and a batched loop reads no table.
     #[inline(always)]
-    pub(crate) fn e_chunk(&self, z: &[f32], e: &mut [(f32, f32); CHUNK]) {
+    pub(crate) fn e_chunk(&self, z: &[f32], e: &mut [f32; CHUNK]) {
         debug_assert!(z.len() <= CHUNK, "{} lanes for a chunk of {CHUNK}", z.len());
         let n = z.len().min(CHUNK);
         let mut mu = [0.0; CHUNK];
@@ -41,7 +41,7 @@ impl DielectricAlbedo {
         self.inside.e_chunk(&mu[..n], &mut inside);
         let sides = outside.iter().zip(&inside);
         for ((e, &z), (&o, &i)) in e.iter_mut().zip(z).zip(sides) {
-            *e = (if z > 0.0 { o } else { i }, z);
+            *e = if z > 0.0 { o } else { i };
         }
     }
 }
