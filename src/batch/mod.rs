@@ -71,7 +71,7 @@
 //! table; `sample` then looks the tables up at the sampled directions and adds what needs
 //! them (the compensation lobe's value, the plastic's diffuse term) in a last pass. Each pass
 //! takes the chunk's slices one to an argument, as the plain loops do (at 16 lanes a call
-//! 0.4–0.7× of the scalar calls, AVX2). The chunk's buffers are on the stack (up to 14 KiB, for
+//! 0.4–0.8× of the scalar calls, AVX2). The chunk's buffers are on the stack (up to 14 KiB, for
 //! a `Vec4` compensated plastic's `sample`; zeroed on each call: a batch of a few lanes pays
 //! for that, one of 256 or more does not notice it). A microfacet model's loops, and the
 //! energy-compensated microfacet model's, take the Fresnel term channel by channel
