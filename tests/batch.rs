@@ -795,13 +795,13 @@ fn at_every_chunk_boundary<M: Checked>(model: &str, m: &M) {
 
 /// Short batches through the plain loops (one loop over the lanes, run by the CPU's vectors
 /// where there are enough lanes for them and by the scalar code for the rest) and through the
-/// loops over one chunk of the models that read albedo tables: every length from 0 to 40
-/// lanes and a few past it, so that batches shorter than one vector, of exactly one or
-/// several, and with every remainder of the 8 and 16 lanes of the AVX2 and AVX-512 loops
-/// equal the scalar calls lane by lane, bit for bit.
+/// loops over one chunk of the models that read albedo tables, and through the models built
+/// from others: every length from 0 to 40 lanes and a few past it, so that batches shorter
+/// than one vector, of exactly one or several, and with every remainder of the 8 and 16 lanes
+/// of the AVX2 and AVX-512 loops equal the scalar calls lane by lane, bit for bit.
 #[test]
 fn short_batches_equal_the_scalar_path_at_every_length() {
-    use lobe::bxdf::CompensatedDielectric;
+    use lobe::bxdf::{CompensatedDielectric, Mix, Mono, TwoSided};
     let gold = common::gold();
     let rgb = Vec3::new(0.8, 0.5, 0.2);
     let glass = Eta::new(1.5).unwrap();
@@ -817,29 +817,26 @@ fn short_batches_equal_the_scalar_path_at_every_length() {
     let compensated = conductor.with_energy_compensation().unwrap();
     let compensated_glass = CompensatedDielectric::new(rough_glass).unwrap();
     let plastic = Plastic::compensated(rgb, Ggx::isotropic(a(0.2)), glass).unwrap();
+    // The models built from others take stack space of 64 lanes for a call of at most 64,
+    // and of a long chunk for a longer one: both sides of that.
+    let mix = Mix::new(lambert, conductor, 0.5).unwrap();
+    let (two_sided, mono) = (TwoSided::new(conductor), Mono::<_, Vec3>::new(rough_glass));
     for n in (0..=40).chain([63, 64, 65, 100]) {
-        compare_lanes(&format!("Lambert, {n} lanes"), &lambert, true, n);
-        compare_lanes(&format!("GGX gold, {n} lanes"), &conductor, true, n);
-        compare_lanes(&format!("rough glass, {n} lanes"), &rough_glass, true, n);
-        compare_lanes(&format!("Glazed, {n} lanes"), &glazed, true, n);
-        compare_lanes(
-            &format!("GGX gold compensated, {n} lanes"),
-            &compensated,
-            true,
-            n,
-        );
-        compare_lanes(
-            &format!("compensated glass, {n} lanes"),
-            &compensated_glass,
-            true,
-            n,
-        );
-        compare_lanes(
-            &format!("compensated plastic, {n} lanes"),
-            &plastic,
-            true,
-            n,
-        );
+        macro_rules! compare {
+            ($name:expr, $m:expr) => {
+                compare_lanes(&format!("{}, {n} lanes", $name), $m, true, n)
+            };
+        }
+        compare!("Lambert", &lambert);
+        compare!("GGX gold", &conductor);
+        compare!("rough glass", &rough_glass);
+        compare!("Glazed", &glazed);
+        compare!("GGX gold compensated", &compensated);
+        compare!("compensated glass", &compensated_glass);
+        compare!("compensated plastic", &plastic);
+        compare!("Mix(Lambert, GGX gold)", &mix);
+        compare!("TwoSided(GGX gold)", &two_sided);
+        compare!("Mono(rough glass)", &mono);
     }
 }
 

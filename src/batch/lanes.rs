@@ -148,8 +148,9 @@ pub struct Vec4sMut<'a> {
 ///
 /// Its hidden methods (a chunk of lanes in stack space, a range of an output) serve the
 /// batched calls of the models built from others; a spectrum of your own implements them as
-/// the crate's three do, on `lobe::batch::Rows` (stack space for up to four channels: a
-/// spectrum of more does not fit, and cannot be a part of `Mix`, `TwoSided` or `Mono`).
+/// the crate's three do, on `lobe::batch::Rows<L>` (stack space of `L` lanes for up to four
+/// channels: a spectrum of more does not fit, and cannot be a part of `Mix`, `TwoSided` or
+/// `Mono`).
 pub trait Lanes: Spectrum {
     /// The slices a batched call writes this spectrum's values into.
     type Mut<'a>;
@@ -174,20 +175,21 @@ pub trait Lanes: Spectrum {
 
     /// The first `n` lanes of a chunk's stack space, one row per channel.
     #[doc(hidden)]
-    fn rows_mut(rows: &mut Rows, n: usize) -> Self::Mut<'_>;
+    fn rows_mut<const L: usize>(rows: &mut Rows<L>, n: usize) -> Self::Mut<'_>;
 
     /// Lane `k` of a chunk's stack space.
     #[doc(hidden)]
-    fn rows_get(rows: &Rows, k: usize) -> Self;
+    fn rows_get<const L: usize>(rows: &Rows<L>, k: usize) -> Self;
 }
 
 /// How many lanes the models built from other models (`Mix`, `TwoSided`, `Mono`) pass to
-/// their parts' batched calls at a time, through stack space of this many lanes.
+/// their parts' batched calls at a time where they hold values of the spectrum, through stack
+/// space of this many lanes (a short call: of fewer, `parts::SHORT`).
 pub(crate) const PART: usize = 256;
 
-/// A chunk's stack space for the values of a spectrum of up to four channels.
+/// A chunk's stack space for the values of a spectrum of up to four channels, `L` lanes.
 #[doc(hidden)]
-pub type Rows = [[f32; PART]; 4];
+pub type Rows<const L: usize = PART> = [[f32; L]; 4];
 
 impl Lanes for f32 {
     type Mut<'a> = &'a mut [f32];
@@ -213,12 +215,12 @@ impl Lanes for f32 {
     }
 
     #[inline(always)]
-    fn rows_mut(rows: &mut Rows, n: usize) -> &mut [f32] {
+    fn rows_mut<const L: usize>(rows: &mut Rows<L>, n: usize) -> &mut [f32] {
         &mut rows[0][..n]
     }
 
     #[inline(always)]
-    fn rows_get(rows: &Rows, k: usize) -> f32 {
+    fn rows_get<const L: usize>(rows: &Rows<L>, k: usize) -> f32 {
         rows[0][k]
     }
 }
@@ -247,7 +249,7 @@ impl Lanes for Vec3 {
     }
 
     #[inline(always)]
-    fn rows_mut(rows: &mut Rows, n: usize) -> Vec3sMut<'_> {
+    fn rows_mut<const L: usize>(rows: &mut Rows<L>, n: usize) -> Vec3sMut<'_> {
         let [x, y, z, _] = rows;
         Vec3sMut {
             x: &mut x[..n],
@@ -257,7 +259,7 @@ impl Lanes for Vec3 {
     }
 
     #[inline(always)]
-    fn rows_get(rows: &Rows, k: usize) -> Vec3 {
+    fn rows_get<const L: usize>(rows: &Rows<L>, k: usize) -> Vec3 {
         Vec3::new(rows[0][k], rows[1][k], rows[2][k])
     }
 }
@@ -299,7 +301,7 @@ impl Lanes for Vec4 {
     }
 
     #[inline(always)]
-    fn rows_mut(rows: &mut Rows, n: usize) -> Vec4sMut<'_> {
+    fn rows_mut<const L: usize>(rows: &mut Rows<L>, n: usize) -> Vec4sMut<'_> {
         let [x, y, z, w] = rows;
         Vec4sMut {
             x: &mut x[..n],
@@ -310,7 +312,7 @@ impl Lanes for Vec4 {
     }
 
     #[inline(always)]
-    fn rows_get(rows: &Rows, k: usize) -> Vec4 {
+    fn rows_get<const L: usize>(rows: &Rows<L>, k: usize) -> Vec4 {
         Vec4::new(rows[0][k], rows[1][k], rows[2][k], rows[3][k])
     }
 }

@@ -138,9 +138,12 @@
 //! estimates, not `eval`'s and `pdf`'s. Stack space, per call: 21 KiB for a blend's `sample`
 //! (256 lanes; each level of a nested blend adds its own), 8 KiB for its `eval` (256 lanes of
 //! values of up to four channels) and `pdf` (1,024 lanes), 8 KiB for `TwoSided` (the mirrored
-//! `z` of 1,024 lanes of `wo` and `wi`), 4 KiB for `Mono` (1,024 values). Each part's call has
-//! a fixed cost (its loop's set-up, a remainder that runs outside the vector loop) that these
-//! chunk lengths keep to a few percent. `cargo bench --bench batched` times every model's
+//! `z` of 1,024 lanes of `wo` and `wi`), 4 KiB for `Mono` (1,024 values). A call of at most 64
+//! lanes takes space for 64: the space is zeroed on every call, and the long chunks' space
+//! cost a short call more than its parts did (`TwoSided(GGX gold)`'s `pdf` at 16 lanes a call
+//! spent more than half its time in `memset`). Each part's call has a fixed cost (its loop's
+//! set-up, a remainder that runs outside the vector loop) that these chunk lengths keep to a
+//! few percent. `cargo bench --bench batched` times every model's
 //! batched calls against its scalar calls; the README has a run. The rules these loops
 //! follow, and how to find why one stays scalar, are in the repository's
 //! `docs/batched-loops.md`.

@@ -1,7 +1,7 @@
 //! The batched calls of the models built from other models ([`Mix`], [`TwoSided`], [`Mono`]):
 //! a chunk of lanes at a time ([`PART`] where values of the spectrum are held, [`WIDE`]
-//! otherwise) through their parts' own batched calls, with the parts' inputs and outputs in
-//! stack space.
+//! otherwise; a call of at most [`SHORT`] lanes in space of that many) through their parts'
+//! own batched calls, with the parts' inputs and outputs in stack space.
 //!
 //! A part's own batched call runs the loop written for it: a microfacet model's masking term
 //! fixed outside the loop, a compensated model's tables looked up a chunk at a time. The
@@ -29,6 +29,11 @@ use glam::Vec3;
 /// at 1,024 in a probe (AVX2).
 const WIDE: usize = 1024;
 
+/// The most lanes of a call that takes stack space of this many lanes, not of [`PART`] or
+/// [`WIDE`]: the space is zeroed on every call, which for `TwoSided(GGX gold)`'s `pdf` at 16
+/// lanes a call was more than half its time (a profile, AVX2).
+const SHORT: usize = 64;
+
 /// The chunks `start..end` of `n` lanes, `L` at a time.
 #[inline(always)]
 fn chunks<const L: usize>(n: usize) -> impl Iterator<Item = (usize, usize)> {
@@ -37,12 +42,12 @@ fn chunks<const L: usize>(n: usize) -> impl Iterator<Item = (usize, usize)> {
         .map(move |start| (start, n.min(start + L)))
 }
 
-/// Stack space for a chunk of 3-vectors.
-type Rows3 = [[f32; PART]; 3];
+/// Stack space for a chunk of `L` 3-vectors.
+type Rows3<const L: usize> = [[f32; L]; 3];
 
 /// The first `n` lanes of `rows` as a [`Vec3s`].
 #[inline(always)]
-fn view(rows: &Rows3, n: usize) -> Vec3s<'_> {
+fn view<const L: usize>(rows: &Rows3<L>, n: usize) -> Vec3s<'_> {
     Vec3s {
         x: &rows[0][..n],
         y: &rows[1][..n],
@@ -52,7 +57,7 @@ fn view(rows: &Rows3, n: usize) -> Vec3s<'_> {
 
 /// The first `n` lanes of `rows` as a [`Vec3sMut`].
 #[inline(always)]
-fn view_mut(rows: &mut Rows3, n: usize) -> Vec3sMut<'_> {
+fn view_mut<const L: usize>(rows: &mut Rows3<L>, n: usize) -> Vec3sMut<'_> {
     let [x, y, z] = rows;
     Vec3sMut {
         x: &mut x[..n],
@@ -63,13 +68,13 @@ fn view_mut(rows: &mut Rows3, n: usize) -> Vec3sMut<'_> {
 
 /// Lane `k` of `rows`.
 #[inline(always)]
-fn get(rows: &Rows3, k: usize) -> Vec3 {
+fn get<const L: usize>(rows: &Rows3<L>, k: usize) -> Vec3 {
     Vec3::new(rows[0][k], rows[1][k], rows[2][k])
 }
 
 /// Writes lane `k` of `rows`.
 #[inline(always)]
-fn put(rows: &mut Rows3, k: usize, w: Vec3) {
+fn put<const L: usize>(rows: &mut Rows3<L>, k: usize, w: Vec3) {
     (rows[0][k], rows[1][k], rows[2][k]) = (w.x, w.y, w.z);
 }
 
@@ -108,25 +113,25 @@ fn out_range<'b, S: Lanes>(
     }
 }
 
-/// A chunk's stack space for a part's samples.
-struct Samples {
-    wi: Rows3,
-    f: Rows,
-    pdf: [f32; PART],
-    lobe: [Lobes; PART],
-    eta: [f32; PART],
+/// A chunk's stack space for a part's samples, `L` lanes.
+struct Samples<const L: usize> {
+    wi: Rows3<L>,
+    f: Rows<L>,
+    pdf: [f32; L],
+    lobe: [Lobes; L],
+    eta: [f32; L],
 }
 
-impl Samples {
+impl<const L: usize> Samples<L> {
     /// Zeroed space.
     #[inline(always)]
     fn new() -> Self {
         Self {
-            wi: [[0.0; PART]; 3],
-            f: [[0.0; PART]; 4],
-            pdf: [0.0; PART],
-            lobe: [Lobes::NONE; PART],
-            eta: [0.0; PART],
+            wi: [[0.0; L]; 3],
+            f: [[0.0; L]; 4],
+            pdf: [0.0; L],
+            lobe: [Lobes::NONE; L],
+            eta: [0.0; L],
         }
     }
 
@@ -183,37 +188,23 @@ where
         &self,
         wo: Vec3s<'_>,
         wi: Vec3s<'_>,
-        mut f: <A::Spectrum as Lanes>::Mut<'_>,
+        f: <A::Spectrum as Lanes>::Mut<'_>,
     ) -> Result<(), LengthError> {
-        type S<A> = <A as Prepare>::Spectrum;
-        let n = same_length(&[wo.lanes()?, wi.lanes()?, S::<A>::lanes(&f)?])?;
-        let (mut fa, mut fb): (Rows, Rows) = ([[0.0; PART]; 4], [[0.0; PART]; 4]);
-        for (start, end) in chunks::<PART>(n) {
-            let (o, i, m) = (wo.range(start, end), wi.range(start, end), end - start);
-            self.first()
-                .eval_batch(o, i, S::<A>::rows_mut(&mut fa, m))?;
-            self.second()
-                .eval_batch(o, i, S::<A>::rows_mut(&mut fb, m))?;
-            for k in 0..m {
-                let v = self.blend(S::<A>::rows_get(&fa, k), S::<A>::rows_get(&fb, k));
-                S::<A>::put(&mut f, start + k, v);
-            }
+        let n = same_length(&[wo.lanes()?, wi.lanes()?, A::Spectrum::lanes(&f)?])?;
+        if n <= SHORT {
+            mix_eval::<SHORT, _, _>(self, wo, wi, f, n)
+        } else {
+            mix_eval::<PART, _, _>(self, wo, wi, f, n)
         }
-        Ok(())
     }
 
     fn pdf_batch(&self, wo: Vec3s<'_>, wi: Vec3s<'_>, pdf: &mut [f32]) -> Result<(), LengthError> {
         let n = same_length(&[wo.lanes()?, wi.lanes()?, pdf.len()])?;
-        let (mut pa, mut pb) = ([0.0; WIDE], [0.0; WIDE]);
-        for (start, end) in chunks::<WIDE>(n) {
-            let (o, i, m) = (wo.range(start, end), wi.range(start, end), end - start);
-            self.first().pdf_batch(o, i, &mut pa[..m])?;
-            self.second().pdf_batch(o, i, &mut pb[..m])?;
-            for (k, p) in pdf[start..end].iter_mut().enumerate() {
-                *p = self.blend_pdf(pa[k], pb[k]);
-            }
+        if n <= SHORT {
+            mix_pdf::<SHORT, _, _>(self, wo, wi, pdf, n)
+        } else {
+            mix_pdf::<WIDE, _, _>(self, wo, wi, pdf, n)
         }
-        Ok(())
     }
 
     /// Each part samples the lanes whose `uc` chose it, gathered into stack space, and the
@@ -224,66 +215,135 @@ where
         wo: Vec3s<'_>,
         u: Vec2s<'_>,
         uc: &[f32],
-        mut out: SampleOut<'_, A::Spectrum>,
+        out: SampleOut<'_, A::Spectrum>,
     ) -> Result<(), LengthError> {
         if self.stochastic() {
             return run(sample_kernel::<_, Plain>(self, wo, u, uc, out));
         }
         let n = sample_lanes(wo, u, uc, &out)?;
-        let (wa, wb) = (1.0 - self.weight(), self.weight());
-        let mut share = Share::new();
-        for (start, end) in chunks::<PART>(n) {
-            let (o, v, c) = (wo.range(start, end), u.range(start, end), &uc[start..end]);
-            share.gather(o, v, c, |uc| {
-                picks(uc, wa).then(|| reuse_uniform(uc, 0.0, wa))
-            });
-            share.sample(self, self.first(), self.second(), true, wa, &mut out, start)?;
-            let b = |uc| (!picks(uc, wa)).then(|| reuse_uniform(uc, wa, wb));
-            share.gather(o, v, c, b);
-            share.sample(
-                self,
-                self.second(),
-                self.first(),
-                false,
-                wb,
-                &mut out,
-                start,
-            )?;
+        if n <= SHORT {
+            mix_sample(self, wo, u, uc, out, n, &mut Share::<SHORT>::new())
+        } else {
+            mix_sample(self, wo, u, uc, out, n, &mut Share::<PART>::new())
         }
-        Ok(())
     }
 }
 
-/// A part's share of a chunk of a blend's lanes: the lanes whose `uc` chose it, gathered, and
-/// the stack space for its samples and the other part's evaluation at them.
-struct Share {
+/// [`Mix`]'s `eval_batch` over `n` lanes, `L` at a time.
+#[inline(always)]
+fn mix_eval<const L: usize, A, B>(
+    mix: &Mix<A, B>,
+    wo: Vec3s<'_>,
+    wi: Vec3s<'_>,
+    mut f: <A::Spectrum as Lanes>::Mut<'_>,
+    n: usize,
+) -> Result<(), LengthError>
+where
+    A: Batch,
+    B: Batch<Spectrum = A::Spectrum>,
+    A::Spectrum: Lanes,
+{
+    type S<A> = <A as Prepare>::Spectrum;
+    let (mut fa, mut fb): (Rows<L>, Rows<L>) = ([[0.0; L]; 4], [[0.0; L]; 4]);
+    for (start, end) in chunks::<L>(n) {
+        let (o, i, m) = (wo.range(start, end), wi.range(start, end), end - start);
+        mix.first().eval_batch(o, i, S::<A>::rows_mut(&mut fa, m))?;
+        mix.second()
+            .eval_batch(o, i, S::<A>::rows_mut(&mut fb, m))?;
+        for k in 0..m {
+            let v = mix.blend(S::<A>::rows_get(&fa, k), S::<A>::rows_get(&fb, k));
+            S::<A>::put(&mut f, start + k, v);
+        }
+    }
+    Ok(())
+}
+
+/// [`Mix`]'s `pdf_batch` over `n` lanes, `L` at a time.
+#[inline(always)]
+fn mix_pdf<const L: usize, A, B>(
+    mix: &Mix<A, B>,
+    wo: Vec3s<'_>,
+    wi: Vec3s<'_>,
+    pdf: &mut [f32],
+    n: usize,
+) -> Result<(), LengthError>
+where
+    A: Batch,
+    B: Batch<Spectrum = A::Spectrum>,
+    A::Spectrum: Lanes,
+{
+    let (mut pa, mut pb) = ([0.0; L], [0.0; L]);
+    for (start, end) in chunks::<L>(n) {
+        let (o, i, m) = (wo.range(start, end), wi.range(start, end), end - start);
+        mix.first().pdf_batch(o, i, &mut pa[..m])?;
+        mix.second().pdf_batch(o, i, &mut pb[..m])?;
+        for (k, p) in pdf[start..end].iter_mut().enumerate() {
+            *p = mix.blend_pdf(pa[k], pb[k]);
+        }
+    }
+    Ok(())
+}
+
+/// [`Mix`]'s `sample_batch` over `n` lanes, a chunk of `L` at a time through `share`.
+#[inline(always)]
+fn mix_sample<const L: usize, A, B>(
+    mix: &Mix<A, B>,
+    wo: Vec3s<'_>,
+    u: Vec2s<'_>,
+    uc: &[f32],
+    mut out: SampleOut<'_, A::Spectrum>,
+    n: usize,
+    share: &mut Share<L>,
+) -> Result<(), LengthError>
+where
+    A: Batch,
+    B: Batch<Spectrum = A::Spectrum>,
+    A::Spectrum: Lanes,
+{
+    let (wa, wb) = (1.0 - mix.weight(), mix.weight());
+    for (start, end) in chunks::<L>(n) {
+        let (o, v, c) = (wo.range(start, end), u.range(start, end), &uc[start..end]);
+        share.gather(o, v, c, |uc| {
+            picks(uc, wa).then(|| reuse_uniform(uc, 0.0, wa))
+        });
+        share.sample(mix, mix.first(), mix.second(), true, wa, &mut out, start)?;
+        let b = |uc| (!picks(uc, wa)).then(|| reuse_uniform(uc, wa, wb));
+        share.gather(o, v, c, b);
+        share.sample(mix, mix.second(), mix.first(), false, wb, &mut out, start)?;
+    }
+    Ok(())
+}
+
+/// A part's share of a chunk of a blend's lanes (`L` at most): the lanes whose `uc` chose
+/// it, gathered, and the stack space for its samples and the other part's evaluation at them.
+struct Share<const L: usize> {
     /// How many lanes are gathered.
     n: usize,
     /// Each gathered lane's index in the chunk.
-    lane: [u32; PART],
-    wo: Rows3,
-    u: [[f32; PART]; 2],
+    lane: [u32; L],
+    wo: Rows3<L>,
+    u: [[f32; L]; 2],
     /// The `uc` the part gets (remapped to `[0, 1)` as in the scalar call).
-    uc: [f32; PART],
-    samples: Samples,
+    uc: [f32; L],
+    samples: Samples<L>,
     /// The other part's value and density at each sample's direction.
-    f: Rows,
-    pdf: [f32; PART],
+    f: Rows<L>,
+    pdf: [f32; L],
 }
 
-impl Share {
+impl<const L: usize> Share<L> {
     /// Zeroed space.
     #[inline(always)]
     fn new() -> Self {
         Self {
             n: 0,
-            lane: [0; PART],
-            wo: [[0.0; PART]; 3],
-            u: [[0.0; PART]; 2],
-            uc: [0.0; PART],
+            lane: [0; L],
+            wo: [[0.0; L]; 3],
+            u: [[0.0; L]; 2],
+            uc: [0.0; L],
             samples: Samples::new(),
-            f: [[0.0; PART]; 4],
-            pdf: [0.0; PART],
+            f: [[0.0; L]; 4],
+            pdf: [0.0; L],
         }
     }
 
@@ -364,7 +424,12 @@ impl Share {
 /// The `z` of a chunk of `wo` seen from above and of `wi` mirrored with it, as [`TwoSided`]
 /// sees them (`wi` may be absent: a sample call's chunk); `x` and `y` stay as they are.
 #[inline(always)]
-fn from_above(wo_z: &[f32], wi_z: Option<&[f32]>, up: &mut [f32; WIDE], wi_up: &mut [f32; WIDE]) {
+fn from_above<const L: usize>(
+    wo_z: &[f32],
+    wi_z: Option<&[f32]>,
+    up: &mut [f32; L],
+    wi_up: &mut [f32; L],
+) {
     // Every slice cut to one length, so that the loop has no bounds checks and vectorises.
     let n = wo_z.len();
     let (z, up) = (&wo_z[..n], &mut up[..n]);
@@ -396,30 +461,23 @@ where
         &self,
         wo: Vec3s<'_>,
         wi: Vec3s<'_>,
-        mut f: <B::Spectrum as Lanes>::Mut<'_>,
+        f: <B::Spectrum as Lanes>::Mut<'_>,
     ) -> Result<(), LengthError> {
         let n = same_length(&[wo.lanes()?, wi.lanes()?, B::Spectrum::lanes(&f)?])?;
-        let (mut up, mut wi_up) = ([0.0; WIDE], [0.0; WIDE]);
-        for (start, end) in chunks::<WIDE>(n) {
-            let z = Some(&wi.z[start..end]);
-            from_above(&wo.z[start..end], z, &mut up, &mut wi_up);
-            let (o, i) = (with_z(wo, start, end, &up), with_z(wi, start, end, &wi_up));
-            let out = B::Spectrum::lanes_of(&mut f, start, end);
-            self.inner().eval_batch(o, i, out)?;
+        if n <= SHORT {
+            two_sided_eval::<SHORT, _>(self, wo, wi, f, n)
+        } else {
+            two_sided_eval::<WIDE, _>(self, wo, wi, f, n)
         }
-        Ok(())
     }
 
     fn pdf_batch(&self, wo: Vec3s<'_>, wi: Vec3s<'_>, pdf: &mut [f32]) -> Result<(), LengthError> {
         let n = same_length(&[wo.lanes()?, wi.lanes()?, pdf.len()])?;
-        let (mut up, mut wi_up) = ([0.0; WIDE], [0.0; WIDE]);
-        for (start, end) in chunks::<WIDE>(n) {
-            let z = Some(&wi.z[start..end]);
-            from_above(&wo.z[start..end], z, &mut up, &mut wi_up);
-            let (o, i) = (with_z(wo, start, end, &up), with_z(wi, start, end, &wi_up));
-            self.inner().pdf_batch(o, i, &mut pdf[start..end])?;
+        if n <= SHORT {
+            two_sided_pdf::<SHORT, _>(self, wo, wi, pdf, n)
+        } else {
+            two_sided_pdf::<WIDE, _>(self, wo, wi, pdf, n)
         }
-        Ok(())
     }
 
     fn sample_batch(
@@ -427,26 +485,91 @@ where
         wo: Vec3s<'_>,
         u: Vec2s<'_>,
         uc: &[f32],
-        mut out: SampleOut<'_, B::Spectrum>,
+        out: SampleOut<'_, B::Spectrum>,
     ) -> Result<(), LengthError> {
         let n = sample_lanes(wo, u, uc, &out)?;
-        let (mut up, mut unused) = ([0.0; WIDE], [0.0; WIDE]);
-        for (start, end) in chunks::<WIDE>(n) {
-            let oz = &wo.z[start..end];
-            from_above(oz, None, &mut up, &mut unused);
-            let (v, c) = (u.range(start, end), &uc[start..end]);
-            let part = out_range(&mut out, start, end);
-            self.inner()
-                .sample_batch(with_z(wo, start, end, &up), v, c, part)?;
-            // A sample drawn from above goes back below with `wo` (a lane without one stays 0).
-            let (z, lobe) = (&mut out.wi.z[start..end], &out.lobe[start..end]);
-            for k in 0..oz.len() {
-                let below = (oz[k] < 0.0) & (lobe[k] != Lobes::NONE);
-                z[k] = if below { -z[k] } else { z[k] };
-            }
+        if n <= SHORT {
+            two_sided_sample::<SHORT, _>(self, wo, u, uc, out, n)
+        } else {
+            two_sided_sample::<WIDE, _>(self, wo, u, uc, out, n)
         }
-        Ok(())
     }
+}
+
+/// [`TwoSided`]'s `eval_batch` over `n` lanes, `L` at a time.
+#[inline(always)]
+fn two_sided_eval<const L: usize, B: Batch>(
+    two: &TwoSided<B>,
+    wo: Vec3s<'_>,
+    wi: Vec3s<'_>,
+    mut f: <B::Spectrum as Lanes>::Mut<'_>,
+    n: usize,
+) -> Result<(), LengthError>
+where
+    B::Spectrum: Lanes,
+{
+    let (mut up, mut wi_up) = ([0.0; L], [0.0; L]);
+    for (start, end) in chunks::<L>(n) {
+        let z = Some(&wi.z[start..end]);
+        from_above(&wo.z[start..end], z, &mut up, &mut wi_up);
+        let (o, i) = (with_z(wo, start, end, &up), with_z(wi, start, end, &wi_up));
+        let out = B::Spectrum::lanes_of(&mut f, start, end);
+        two.inner().eval_batch(o, i, out)?;
+    }
+    Ok(())
+}
+
+/// [`TwoSided`]'s `pdf_batch` over `n` lanes, `L` at a time.
+#[inline(always)]
+fn two_sided_pdf<const L: usize, B: Batch>(
+    two: &TwoSided<B>,
+    wo: Vec3s<'_>,
+    wi: Vec3s<'_>,
+    pdf: &mut [f32],
+    n: usize,
+) -> Result<(), LengthError>
+where
+    B::Spectrum: Lanes,
+{
+    let (mut up, mut wi_up) = ([0.0; L], [0.0; L]);
+    for (start, end) in chunks::<L>(n) {
+        let z = Some(&wi.z[start..end]);
+        from_above(&wo.z[start..end], z, &mut up, &mut wi_up);
+        let (o, i) = (with_z(wo, start, end, &up), with_z(wi, start, end, &wi_up));
+        two.inner().pdf_batch(o, i, &mut pdf[start..end])?;
+    }
+    Ok(())
+}
+
+/// [`TwoSided`]'s `sample_batch` over `n` lanes, `L` at a time.
+#[inline(always)]
+fn two_sided_sample<const L: usize, B: Batch>(
+    two: &TwoSided<B>,
+    wo: Vec3s<'_>,
+    u: Vec2s<'_>,
+    uc: &[f32],
+    mut out: SampleOut<'_, B::Spectrum>,
+    n: usize,
+) -> Result<(), LengthError>
+where
+    B::Spectrum: Lanes,
+{
+    let (mut up, mut unused) = ([0.0; L], [0.0; L]);
+    for (start, end) in chunks::<L>(n) {
+        let oz = &wo.z[start..end];
+        from_above(oz, None, &mut up, &mut unused);
+        let (v, c) = (u.range(start, end), &uc[start..end]);
+        let part = out_range(&mut out, start, end);
+        two.inner()
+            .sample_batch(with_z(wo, start, end, &up), v, c, part)?;
+        // A sample drawn from above goes back below with `wo` (a lane without one stays 0).
+        let (z, lobe) = (&mut out.wi.z[start..end], &out.lobe[start..end]);
+        for k in 0..oz.len() {
+            let below = (oz[k] < 0.0) & (lobe[k] != Lobes::NONE);
+            z[k] = if below { -z[k] } else { z[k] };
+        }
+    }
+    Ok(())
 }
 
 impl<B, S> Batch for Mono<B, S>
@@ -454,23 +577,13 @@ where
     B: Batch<Spectrum = f32>,
     S: Spectrum + Lanes,
 {
-    fn eval_batch(
-        &self,
-        wo: Vec3s<'_>,
-        wi: Vec3s<'_>,
-        mut f: S::Mut<'_>,
-    ) -> Result<(), LengthError> {
+    fn eval_batch(&self, wo: Vec3s<'_>, wi: Vec3s<'_>, f: S::Mut<'_>) -> Result<(), LengthError> {
         let n = same_length(&[wo.lanes()?, wi.lanes()?, S::lanes(&f)?])?;
-        let mut g = [0.0; WIDE];
-        for (start, end) in chunks::<WIDE>(n) {
-            let g = &mut g[..end - start];
-            self.inner()
-                .eval_batch(wo.range(start, end), wi.range(start, end), g)?;
-            for (k, &v) in g.iter().enumerate() {
-                S::put(&mut f, start + k, S::splat(v));
-            }
+        if n <= SHORT {
+            mono_eval::<SHORT, _, _>(self, wo, wi, f, n)
+        } else {
+            mono_eval::<WIDE, _, _>(self, wo, wi, f, n)
         }
-        Ok(())
     }
 
     fn pdf_batch(&self, wo: Vec3s<'_>, wi: Vec3s<'_>, pdf: &mut [f32]) -> Result<(), LengthError> {
@@ -482,25 +595,71 @@ where
         wo: Vec3s<'_>,
         u: Vec2s<'_>,
         uc: &[f32],
-        mut out: SampleOut<'_, S>,
+        out: SampleOut<'_, S>,
     ) -> Result<(), LengthError> {
         let n = sample_lanes(wo, u, uc, &out)?;
-        let mut g = [0.0; WIDE];
-        for (start, end) in chunks::<WIDE>(n) {
-            let g = &mut g[..end - start];
-            let (o, v, c) = (wo.range(start, end), u.range(start, end), &uc[start..end]);
-            let inner = SampleOut {
-                wi: out.wi.range(start, end),
-                f: &mut *g,
-                pdf: &mut out.pdf[start..end],
-                lobe: &mut out.lobe[start..end],
-                eta: &mut out.eta[start..end],
-            };
-            self.inner().sample_batch(o, v, c, inner)?;
-            for (k, &v) in g.iter().enumerate() {
-                S::put(&mut out.f, start + k, S::splat(v));
-            }
+        if n <= SHORT {
+            mono_sample::<SHORT, _, _>(self, wo, u, uc, out, n)
+        } else {
+            mono_sample::<WIDE, _, _>(self, wo, u, uc, out, n)
         }
-        Ok(())
     }
+}
+
+/// [`Mono`]'s `eval_batch` over `n` lanes, `L` at a time.
+#[inline(always)]
+fn mono_eval<const L: usize, B, S>(
+    mono: &Mono<B, S>,
+    wo: Vec3s<'_>,
+    wi: Vec3s<'_>,
+    mut f: S::Mut<'_>,
+    n: usize,
+) -> Result<(), LengthError>
+where
+    B: Batch<Spectrum = f32>,
+    S: Spectrum + Lanes,
+{
+    let mut g = [0.0; L];
+    for (start, end) in chunks::<L>(n) {
+        let g = &mut g[..end - start];
+        mono.inner()
+            .eval_batch(wo.range(start, end), wi.range(start, end), g)?;
+        for (k, &v) in g.iter().enumerate() {
+            S::put(&mut f, start + k, S::splat(v));
+        }
+    }
+    Ok(())
+}
+
+/// [`Mono`]'s `sample_batch` over `n` lanes, `L` at a time.
+#[inline(always)]
+fn mono_sample<const L: usize, B, S>(
+    mono: &Mono<B, S>,
+    wo: Vec3s<'_>,
+    u: Vec2s<'_>,
+    uc: &[f32],
+    mut out: SampleOut<'_, S>,
+    n: usize,
+) -> Result<(), LengthError>
+where
+    B: Batch<Spectrum = f32>,
+    S: Spectrum + Lanes,
+{
+    let mut g = [0.0; L];
+    for (start, end) in chunks::<L>(n) {
+        let g = &mut g[..end - start];
+        let (o, v, c) = (wo.range(start, end), u.range(start, end), &uc[start..end]);
+        let inner = SampleOut {
+            wi: out.wi.range(start, end),
+            f: &mut *g,
+            pdf: &mut out.pdf[start..end],
+            lobe: &mut out.lobe[start..end],
+            eta: &mut out.eta[start..end],
+        };
+        mono.inner().sample_batch(o, v, c, inner)?;
+        for (k, &v) in g.iter().enumerate() {
+            S::put(&mut out.f, start + k, S::splat(v));
+        }
+    }
+    Ok(())
 }
