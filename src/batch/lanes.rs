@@ -187,6 +187,20 @@ pub trait Lanes: Spectrum {
 /// space of this many lanes (a short call: of fewer, `parts::SHORT`).
 pub(crate) const PART: usize = 256;
 
+/// The most lanes of a call that holds its chunk in stack space of this many lanes, not of a
+/// long chunk's ([`PART`], the tables' 256, `Mix`'s 1,024 densities): the space is zeroed on
+/// every call, and for a short call that cost more than the lanes did (`TwoSided(GGX gold)`'s
+/// `pdf` at 16 lanes a call spent more than half its time in `memset`, a profile under AVX2).
+pub(crate) const SHORT: usize = 64;
+
+/// The chunks `start..end` of `n` lanes, `L` at a time.
+#[inline(always)]
+pub(crate) fn chunks<const L: usize>(n: usize) -> impl Iterator<Item = (usize, usize)> {
+    (0..n)
+        .step_by(L)
+        .map(move |start| (start, n.min(start + L)))
+}
+
 /// A chunk's stack space for the values of a spectrum of up to four channels, `L` lanes.
 #[doc(hidden)]
 pub type Rows<const L: usize = PART> = [[f32; L]; 4];

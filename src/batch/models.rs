@@ -20,7 +20,6 @@ use crate::bxdf::{At, BxdfSample, CompensatedState, Compensation, FixedForm, Pre
 use crate::bxdf::{CompensatedPlastic, PlasticState};
 use crate::microfacet::Masking;
 use crate::microfacet::View;
-use crate::tables::CHUNK;
 use glam::{Vec2, Vec3};
 
 impl<S: Spectrum + Lanes> Batch for Lambert<S> {}
@@ -226,7 +225,7 @@ impl<D: NormalDistribution, F: FresnelAverage> TableLanes for CompensatedMicrofa
     type Looked = f32;
 
     #[inline(always)]
-    fn look_up(&self, z: &[f32], e: &mut [f32; CHUNK]) {
+    fn look_up<const L: usize>(&self, z: &[f32], e: &mut [f32; L]) {
         self.albedo().e_chunk(z, e);
     }
 
@@ -305,7 +304,7 @@ impl<D: NormalDistribution> TableLanes for CompensatedDielectric<D> {
     type Looked = f32;
 
     #[inline(always)]
-    fn look_up(&self, z: &[f32], e: &mut [f32; CHUNK]) {
+    fn look_up<const L: usize>(&self, z: &[f32], e: &mut [f32; L]) {
         self.albedo().e_chunk(z, e);
     }
 
@@ -417,7 +416,7 @@ impl<D: NormalDistribution, S: Spectrum> TableLanes for Plastic<D, S, Microfacet
     type Looked = f32;
 
     #[inline(always)]
-    fn look_up(&self, z: &[f32], e: &mut [f32; CHUNK]) {
+    fn look_up<const L: usize>(&self, z: &[f32], e: &mut [f32; L]) {
         self.coat_albedo_chunk(z, e);
     }
 
@@ -479,8 +478,8 @@ impl<D: NormalDistribution, S: Spectrum> TableLanes for CompensatedPlastic<D, S>
     type Looked = (f32, f32);
 
     #[inline(always)]
-    fn look_up(&self, z: &[f32], e: &mut [(f32, f32); CHUNK]) {
-        let (mut plastic, mut coat) = ([0.0; CHUNK], [0.0; CHUNK]);
+    fn look_up<const L: usize>(&self, z: &[f32], e: &mut [(f32, f32); L]) {
+        let (mut plastic, mut coat) = ([0.0; L], [0.0; L]);
         self.coat_albedo_chunk(z, &mut plastic);
         self.coat().albedo().e_chunk(z, &mut coat);
         for ((e, &p), &c) in e.iter_mut().zip(&plastic).zip(&coat) {

@@ -14,7 +14,7 @@
 //! carries the chosen part's random-walk estimates, which are not its `eval` and `pdf`.
 
 use super::kernel::Plain;
-use super::lanes::{PART, Rows};
+use super::lanes::{PART, Rows, SHORT, chunks};
 use super::{Batch, Lanes, LengthError, SampleOut, Vec2s, Vec3s, Vec3sMut};
 use super::{run, same_length, sample_kernel};
 use crate::bxdf::{BxdfSample, Lobes, Mix, Mono, Prepare, TwoSided};
@@ -28,19 +28,6 @@ use glam::Vec3;
 /// chunk spreads thinner. `TwoSided(GGX gold)`'s `pdf` costs 1.3× more per lane at 256 than
 /// at 1,024 in a probe (AVX2).
 const WIDE: usize = 1024;
-
-/// The most lanes of a call that takes stack space of this many lanes, not of [`PART`] or
-/// [`WIDE`]: the space is zeroed on every call, which for `TwoSided(GGX gold)`'s `pdf` at 16
-/// lanes a call was more than half its time (a profile, AVX2).
-const SHORT: usize = 64;
-
-/// The chunks `start..end` of `n` lanes, `L` at a time.
-#[inline(always)]
-fn chunks<const L: usize>(n: usize) -> impl Iterator<Item = (usize, usize)> {
-    (0..n)
-        .step_by(L)
-        .map(move |start| (start, n.min(start + L)))
-}
 
 /// Stack space for a chunk of `L` 3-vectors.
 type Rows3<const L: usize> = [[f32; L]; 3];

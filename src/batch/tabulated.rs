@@ -17,11 +17,13 @@
 //!
 //! The chunk's buffers live on the stack: up to 14 KiB for a `Vec4` compensated plastic's
 //! `sample` (two tables' values per lane, and its lookups' temporaries), 11 KiB for a `Vec4`
-//! compensated conductor's, 5 KiB for an `f32` one's; zeroed on every call, so a batch of a
-//! few lanes pays for that, one of 256 or more does not notice it.
+//! compensated conductor's, 5 KiB for an `f32` one's, zeroed on every call. A call of at most
+//! [`SHORT`] lanes takes buffers of that many lanes (a quarter of the size), so that a short
+//! call does not pay for zeroing a long chunk's.
 
 use super::kernel::{EvalKernel, Kernel, PdfKernel, SampleKernel};
 use super::lanes::{Lanes, Vec2s, Vec3s, Vec3sMut};
+use super::lanes::{SHORT, chunks};
 use super::{LengthError, SampleOut};
 use crate::bxdf::{BxdfSample, Lobes, Prepare};
 use crate::spectrum::Spectrum;
@@ -56,9 +58,9 @@ impl Slot for (f32, f32) {
 pub(crate) trait TableLanes: Prepare {
     /// What the tables give at one direction.
     type Looked: Slot;
-    /// The tables' values at each direction whose `z` is `z[k]`, into `e[k]` (at most
-    /// [`CHUNK`] lanes; [`AlbedoRow::e_chunk`]).
-    fn look_up(&self, z: &[f32], e: &mut [Self::Looked; CHUNK]);
+    /// The tables' values at each direction whose `z` is `z[k]`, into `e[k]` (at most `L`
+    /// lanes; [`AlbedoRow::e_chunk`]).
+    fn look_up<const L: usize>(&self, z: &[f32], e: &mut [Self::Looked; L]);
     /// [`Prepare::prepare`] with the tables' values at `wo` given as `e_wo`.
     fn prepare_from(&self, wo: Vec3, e_wo: Self::Looked) -> Self::Prepared;
     /// [`Prepare::pdf_prepared`] as a batched loop's lane computes it (the same numbers;
@@ -104,43 +106,76 @@ pub(crate) trait TableSampleOp<M: TableSample> {
 }
 
 /// A batched call's kernel ([`EvalKernel`], [`PdfKernel`], [`SampleKernel`]) run a chunk
-/// of lanes at a time, for a table model's lane operation.
-pub(crate) struct Chunked<K>(K);
+/// of `L` lanes at a time, for a table model's lane operation.
+pub(crate) struct Chunked<const L: usize, K>(K);
 
-/// The chunks of `0..n`, as `(start, end)`.
-#[inline(always)]
-fn chunks(n: usize) -> impl Iterator<Item = (usize, usize)> {
-    (0..n)
-        .step_by(CHUNK)
-        .map(move |start| (start, (start + CHUNK).min(n)))
+/// A kernel's number of lanes.
+pub(crate) trait Counted {
+    /// The lanes the kernel runs.
+    fn lanes(&self) -> usize;
+}
+
+impl<M: Prepare, O> Counted for EvalKernel<'_, '_, M, O>
+where
+    M::Spectrum: Lanes,
+{
+    #[inline(always)]
+    fn lanes(&self) -> usize {
+        self.n
+    }
+}
+
+impl<M, O> Counted for PdfKernel<'_, '_, M, O> {
+    #[inline(always)]
+    fn lanes(&self) -> usize {
+        self.n
+    }
+}
+
+impl<M: Prepare, O> Counted for SampleKernel<'_, '_, M, O>
+where
+    M::Spectrum: Lanes,
+{
+    #[inline(always)]
+    fn lanes(&self) -> usize {
+        self.n
+    }
 }
 
 /// `f[k] = eval(wo[k], wi[k])` over the first `n` lanes, a chunk at a time.
-impl<M: TableLanes + Clone, O: TableOp<M>> Kernel for Chunked<EvalKernel<'_, '_, M, O>>
+impl<const L: usize, M: TableLanes + Clone, O: TableOp<M>> Kernel
+    for Chunked<L, EvalKernel<'_, '_, M, O>>
 where
     M::Spectrum: Lanes,
 {
     #[inline(always)]
     fn run(self) {
         let EvalKernel {
-            m,
-            wo,
-            wi,
-            mut f,
-            n,
-            ..
+            m, wo, wi, f, n, ..
         } = self.0;
-        let m = m.clone();
-        let placeholder = M::Looked::placeholder();
-        let (mut e_wo, mut e_wi) = ([placeholder; CHUNK], [placeholder; CHUNK]);
-        for (start, end) in chunks(n) {
-            let (wo, wi) = (wo.range(start, end), wi.range(start, end));
-            m.look_up(wo.z, &mut e_wo);
-            m.look_up(wi.z, &mut e_wi);
-            let f = M::Spectrum::lanes_of(&mut f, start, end);
-            let (o, i) = (wo, wi);
-            pair_chunk::<M, Value<O>>(&m, o.x, o.y, o.z, &e_wo, i.x, i.y, i.z, &e_wi, f);
-        }
+        eval_chunks::<L, M, O>(&m.clone(), wo, wi, f, n);
+    }
+}
+
+/// [`Chunked`] `eval` over `n` lanes, `L` at a time.
+#[inline(always)]
+fn eval_chunks<const L: usize, M: TableLanes, O: TableOp<M>>(
+    m: &M,
+    wo: Vec3s<'_>,
+    wi: Vec3s<'_>,
+    mut f: <M::Spectrum as Lanes>::Mut<'_>,
+    n: usize,
+) where
+    M::Spectrum: Lanes,
+{
+    let placeholder = M::Looked::placeholder();
+    let (mut e_wo, mut e_wi) = ([placeholder; L], [placeholder; L]);
+    for (start, end) in chunks::<L>(n) {
+        let (o, i) = (wo.range(start, end), wi.range(start, end));
+        m.look_up(o.z, &mut e_wo);
+        m.look_up(i.z, &mut e_wi);
+        let f = M::Spectrum::lanes_of(&mut f, start, end);
+        pair_chunk::<L, M, Value<O>>(m, o.x, o.y, o.z, &e_wo, i.x, i.y, i.z, &e_wi, f);
     }
 }
 
@@ -184,19 +219,19 @@ impl<M: TableLanes> ChunkPair<M> for Density {
 /// (the generic loops' rule: `docs/batched-loops.md`, rule 10).
 #[inline(always)]
 #[allow(clippy::too_many_arguments)] // the point: one slice to an argument
-fn pair_chunk<M: TableLanes, P: ChunkPair<M>>(
+fn pair_chunk<const L: usize, M: TableLanes, P: ChunkPair<M>>(
     m: &M,
     ox: &[f32],
     oy: &[f32],
     oz: &[f32],
-    e_wo: &[M::Looked; CHUNK],
+    e_wo: &[M::Looked; L],
     ix: &[f32],
     iy: &[f32],
     iz: &[f32],
-    e_wi: &[M::Looked; CHUNK],
+    e_wi: &[M::Looked; L],
     out: <P::Out as Lanes>::Mut<'_>,
 ) {
-    let n = ox.len().min(CHUNK);
+    let n = ox.len().min(L);
     let (wo, wi) = (lanes3(ox, oy, oz, n), lanes3(ix, iy, iz, n));
     let (e_wo, e_wi) = (&e_wo[..n], &e_wi[..n]);
     let mut out = P::Out::truncate(out, n);
@@ -213,29 +248,40 @@ fn lanes3<'a>(x: &'a [f32], y: &'a [f32], z: &'a [f32], n: usize) -> Vec3s<'a> {
 }
 
 /// `pdf[k] = pdf(wo[k], wi[k])` over the first `n` lanes, a chunk at a time.
-impl<M: TableLanes + Clone> Kernel for Chunked<PdfKernel<'_, '_, M, ()>> {
+impl<const L: usize, M: TableLanes + Clone> Kernel for Chunked<L, PdfKernel<'_, '_, M, ()>> {
     #[inline(always)]
     fn run(self) {
         let PdfKernel {
             m, wo, wi, pdf, n, ..
         } = self.0;
-        let m = m.clone();
-        let mut e_wo = [M::Looked::placeholder(); CHUNK];
-        for (start, end) in chunks(n) {
-            let (wo, wi) = (wo.range(start, end), wi.range(start, end));
-            m.look_up(wo.z, &mut e_wo);
-            let pdf = &mut pdf[start..end];
-            // `pdf` reads no table at `wi`: `e_wo` stands in for it, unread.
-            let (o, i) = (wo, wi);
-            pair_chunk::<M, Density>(&m, o.x, o.y, o.z, &e_wo, i.x, i.y, i.z, &e_wo, pdf);
-        }
+        pdf_chunks::<L, M>(&m.clone(), wo, wi, pdf, n);
+    }
+}
+
+/// [`Chunked`] `pdf` over `n` lanes, `L` at a time.
+#[inline(always)]
+fn pdf_chunks<const L: usize, M: TableLanes>(
+    m: &M,
+    wo: Vec3s<'_>,
+    wi: Vec3s<'_>,
+    pdf: &mut [f32],
+    n: usize,
+) {
+    let mut e_wo = [M::Looked::placeholder(); L];
+    for (start, end) in chunks::<L>(n) {
+        let (o, i) = (wo.range(start, end), wi.range(start, end));
+        m.look_up(o.z, &mut e_wo);
+        let pdf = &mut pdf[start..end];
+        // `pdf` reads no table at `wi`: `e_wo` stands in for it, unread.
+        pair_chunk::<L, M, Density>(m, o.x, o.y, o.z, &e_wo, i.x, i.y, i.z, &e_wo, pdf);
     }
 }
 
 /// `(wi, f, pdf, lobe, eta)[k] = sample(wo[k], u[k], uc[k])` over the first `n` lanes, zeros
 /// (and [`Lobes::NONE`]) for no sample, a chunk at a time: the row at `wo.z`, the samples, the
 /// row at the sampled directions' `wi.z` (where the samples are unfinished), their values.
-impl<M: TableSample + Clone, O: TableSampleOp<M>> Kernel for Chunked<SampleKernel<'_, '_, M, O>>
+impl<const L: usize, M: TableSample + Clone, O: TableSampleOp<M>> Kernel
+    for Chunked<L, SampleKernel<'_, '_, M, O>>
 where
     M::Spectrum: Lanes,
 {
@@ -250,66 +296,80 @@ where
             n,
             ..
         } = self.0;
-        let SampleOut {
-            mut wi,
-            mut f,
-            pdf,
-            lobe,
-            eta,
-        } = out;
-        let m = m.clone();
-        let placeholder = M::Looked::placeholder();
-        let (mut e_wo, mut e_wi) = ([placeholder; CHUNK], [placeholder; CHUNK]);
-        let mut drawn = Drawn::<M> {
-            f: [M::Spectrum::zero(); CHUNK],
-            outgoing: [M::Outgoing::placeholder(); CHUNK],
-            sampled: [false; CHUNK],
-        };
-        for (start, end) in chunks(n) {
-            let (wo, u, uc) = (wo.range(start, end), u.range(start, end), &uc[start..end]);
-            m.look_up(wo.z, &mut e_wo);
-            let Vec3sMut {
-                x: ix,
-                y: iy,
-                z: iz,
-            } = wi.range(start, end);
-            let (pdf, lobe) = (&mut pdf[start..end], &mut lobe[start..end]);
-            let eta = &mut eta[start..end];
-            draw_chunk::<M, O>(
-                &m, wo.x, wo.y, wo.z, &e_wo, u.x, u.y, uc, pdf, lobe, eta, ix, iy, iz, &mut drawn,
-            );
-            let f = M::Spectrum::lanes_of(&mut f, start, end);
-            if O::UNFINISHED {
-                m.look_up(iz, &mut e_wi);
-                finish_chunk(&m, &drawn, iz, &e_wi, f);
-            } else {
-                copy_chunk::<M>(&drawn.f, f, end - start);
-            }
+        sample_chunks::<L, M, O>(&m.clone(), wo, u, uc, out, n);
+    }
+}
+
+/// [`Chunked`] `sample` over `n` lanes, `L` at a time.
+#[inline(always)]
+fn sample_chunks<const L: usize, M: TableSample, O: TableSampleOp<M>>(
+    m: &M,
+    wo: Vec3s<'_>,
+    u: Vec2s<'_>,
+    uc: &[f32],
+    out: SampleOut<'_, M::Spectrum>,
+    n: usize,
+) where
+    M::Spectrum: Lanes,
+{
+    let SampleOut {
+        mut wi,
+        mut f,
+        pdf,
+        lobe,
+        eta,
+    } = out;
+    let placeholder = M::Looked::placeholder();
+    let (mut e_wo, mut e_wi) = ([placeholder; L], [placeholder; L]);
+    let mut drawn = Drawn::<L, M> {
+        f: [M::Spectrum::zero(); L],
+        outgoing: [M::Outgoing::placeholder(); L],
+        sampled: [false; L],
+    };
+    for (start, end) in chunks::<L>(n) {
+        let (wo, u, uc) = (wo.range(start, end), u.range(start, end), &uc[start..end]);
+        m.look_up(wo.z, &mut e_wo);
+        let Vec3sMut {
+            x: ix,
+            y: iy,
+            z: iz,
+        } = wi.range(start, end);
+        let (pdf, lobe) = (&mut pdf[start..end], &mut lobe[start..end]);
+        let eta = &mut eta[start..end];
+        draw_chunk::<L, M, O>(
+            m, wo.x, wo.y, wo.z, &e_wo, u.x, u.y, uc, pdf, lobe, eta, ix, iy, iz, &mut drawn,
+        );
+        let f = M::Spectrum::lanes_of(&mut f, start, end);
+        if O::UNFINISHED {
+            m.look_up(iz, &mut e_wi);
+            finish_chunk(m, &drawn, iz, &e_wi, f);
+        } else {
+            copy_chunk::<L, M>(&drawn.f, f, end - start);
         }
     }
 }
 
-/// A chunk's samples as drawn, per lane: the value, what finishing it needs of the prepared
-/// state, and whether there is a sample.
-struct Drawn<M: TableSample> {
+/// A chunk's samples as drawn, per lane (`L` at most): the value, what finishing it needs of
+/// the prepared state, and whether there is a sample.
+struct Drawn<const L: usize, M: TableSample> {
     /// The values as drawn.
-    f: [M::Spectrum; CHUNK],
+    f: [M::Spectrum; L],
     /// What [`TableSample::finish`] needs.
-    outgoing: [M::Outgoing; CHUNK],
+    outgoing: [M::Outgoing; L],
     /// Whether the lane has a sample.
-    sampled: [bool; CHUNK],
+    sampled: [bool; L],
 }
 
 /// [`Chunked`] `sample`'s draws over one chunk, every slice an argument of its own: the
 /// densities, lobes, `η` and directions into the outputs, the values into `drawn`.
 #[inline(always)]
 #[allow(clippy::too_many_arguments)] // the point: one slice to an argument
-fn draw_chunk<M: TableSample, O: TableSampleOp<M>>(
+fn draw_chunk<const L: usize, M: TableSample, O: TableSampleOp<M>>(
     m: &M,
     ox: &[f32],
     oy: &[f32],
     oz: &[f32],
-    e_wo: &[M::Looked; CHUNK],
+    e_wo: &[M::Looked; L],
     ux: &[f32],
     uy: &[f32],
     uc: &[f32],
@@ -319,9 +379,9 @@ fn draw_chunk<M: TableSample, O: TableSampleOp<M>>(
     ix: &mut [f32],
     iy: &mut [f32],
     iz: &mut [f32],
-    drawn: &mut Drawn<M>,
+    drawn: &mut Drawn<L, M>,
 ) {
-    let n = ox.len().min(CHUNK);
+    let n = ox.len().min(L);
     let (wo, u, uc) = (
         lanes3(ox, oy, oz, n),
         Vec2s { x: ux, y: uy }.range(0, n),
@@ -350,16 +410,16 @@ fn draw_chunk<M: TableSample, O: TableSampleOp<M>>(
 /// values `e_wi`, into `f`: every lane finished and the value chosen after, so that the loop
 /// has no branch.
 #[inline(always)]
-fn finish_chunk<M: TableSample>(
+fn finish_chunk<const L: usize, M: TableSample>(
     m: &M,
-    drawn: &Drawn<M>,
+    drawn: &Drawn<L, M>,
     iz: &[f32],
-    e_wi: &[M::Looked; CHUNK],
+    e_wi: &[M::Looked; L],
     f: <M::Spectrum as Lanes>::Mut<'_>,
 ) where
     M::Spectrum: Lanes,
 {
-    let n = iz.len().min(CHUNK);
+    let n = iz.len().min(L);
     let (v, o, s, e) = (
         &drawn.f[..n],
         &drawn.outgoing[..n],
@@ -375,25 +435,34 @@ fn finish_chunk<M: TableSample>(
 
 /// The values of a chunk's finished samples into `f`'s first `n` lanes.
 #[inline(always)]
-fn copy_chunk<M: TableSample>(
-    drawn: &[M::Spectrum; CHUNK],
+fn copy_chunk<const L: usize, M: TableSample>(
+    drawn: &[M::Spectrum; L],
     f: <M::Spectrum as Lanes>::Mut<'_>,
     n: usize,
 ) where
     M::Spectrum: Lanes,
 {
-    let n = n.min(CHUNK);
+    let n = n.min(L);
     let mut f = M::Spectrum::truncate(f, n);
     for (k, &v) in drawn[..n].iter().enumerate() {
         M::Spectrum::put(&mut f, k, v);
     }
 }
 
-/// [`run`](super::run)s a call's kernel in chunks.
+/// [`run`](super::run)s a call's kernel in chunks: of [`SHORT`] lanes for a call of at most
+/// that many, else of [`CHUNK`]. Each length is dispatched on its own: two lengths in one
+/// dispatched function left the compensated glass's `eval` loop scalar under AVX2 (LLVM's
+/// cost model called it not beneficial, in whichever came first).
 #[inline(always)]
-pub(super) fn chunked<K>(kernel: Result<K, LengthError>) -> Result<(), LengthError>
+pub(super) fn chunked<K: Counted>(kernel: Result<K, LengthError>) -> Result<(), LengthError>
 where
-    Chunked<K>: Kernel,
+    Chunked<SHORT, K>: Kernel,
+    Chunked<CHUNK, K>: Kernel,
 {
-    super::run(kernel.map(Chunked))
+    let kernel = kernel?;
+    if kernel.lanes() <= SHORT {
+        super::run(Ok(Chunked::<SHORT, K>(kernel)))
+    } else {
+        super::run(Ok(Chunked::<CHUNK, K>(kernel)))
+    }
 }

@@ -9,7 +9,7 @@ use crate::microfacet::{Masking, NormalDistribution, View};
 use crate::param::{Eta, ParamError, unit_interval};
 use crate::sampling::{cosine_hemisphere, cosine_hemisphere_pdf, reuse_uniform};
 use crate::spectrum::Spectrum;
-use crate::tables::{CHUNK, TabulatedDielectric, node_below};
+use crate::tables::{TabulatedDielectric, node_below};
 use core::f32::consts::FRAC_1_PI;
 use core::marker::PhantomData;
 use glam::{Vec2, Vec3};
@@ -190,12 +190,12 @@ impl<D, S: Spectrum, C> Plastic<D, S, C> {
     }
 
     /// [`coat_albedo_at`](Self::coat_albedo_at) of every `cos_theta[k]`, into `e[k]` (at most
-    /// [`CHUNK`] lanes), in two passes as [`AlbedoRow`](crate::tables::AlbedoRow)'s chunked
+    /// `L` lanes), in two passes as [`AlbedoRow`](crate::tables::AlbedoRow)'s chunked
     /// lookup: the positions, which vectorise, then the reads (for a batched loop).
     #[inline(always)]
-    pub(crate) fn coat_albedo_chunk(&self, cos_theta: &[f32], e: &mut [f32; CHUNK]) {
-        debug_assert!(cos_theta.len() <= CHUNK);
-        let mut node = [0_u32; CHUNK];
+    pub(crate) fn coat_albedo_chunk<const L: usize>(&self, cos_theta: &[f32], e: &mut [f32; L]) {
+        debug_assert!(cos_theta.len() <= L);
+        let mut node = [0_u32; L];
         for ((&c, e), node) in cos_theta.iter().zip(e.iter_mut()).zip(node.iter_mut()) {
             (*node, *e) = node_below(c.clamp(0.0, 1.0) * (TABLE - 1) as f32, TABLE - 2);
         }
@@ -605,6 +605,7 @@ mod tests {
     use super::*;
     use crate::microfacet::Ggx;
     use crate::param::Alpha;
+    use crate::tables::CHUNK;
     use std::vec::Vec;
 
     fn plastic() -> Plastic<Ggx, f32> {

@@ -1,6 +1,6 @@
 //! [`DielectricAlbedo`]: a rough dielectric interface's directional albedo from both sides.
 
-use super::{AlbedoRow, CHUNK};
+use super::AlbedoRow;
 
 /// The single-scattering directional albedo of a rough dielectric interface (reflection plus
 /// transmission, importance transport: the fraction of the flux scattered) seen from the
@@ -25,18 +25,18 @@ impl DielectricAlbedo {
         if z > 0.0 { &self.outside } else { &self.inside }
     }
 
-    /// `row(z).e(|z|)` of every `z[k]`, into `e[k]` (at most [`CHUNK`] lanes): both rows
+    /// `row(z).e(|z|)` of every `z[k]`, into `e[k]` (at most `L` lanes): both rows
     /// looked up with [`AlbedoRow::e_chunk`], then each lane's side kept (a select), so that
     /// the numbers are [`row`](Self::row)'s and a batched loop reads no table.
     #[inline(always)]
-    pub(crate) fn e_chunk(&self, z: &[f32], e: &mut [f32; CHUNK]) {
-        debug_assert!(z.len() <= CHUNK, "{} lanes for a chunk of {CHUNK}", z.len());
-        let n = z.len().min(CHUNK);
-        let mut mu = [0.0; CHUNK];
+    pub(crate) fn e_chunk<const L: usize>(&self, z: &[f32], e: &mut [f32; L]) {
+        debug_assert!(z.len() <= L, "{} lanes for a chunk of {L}", z.len());
+        let n = z.len().min(L);
+        let mut mu = [0.0; L];
         for (mu, &z) in mu.iter_mut().zip(z) {
             *mu = z.abs();
         }
-        let (mut outside, mut inside) = ([0.0; CHUNK], [0.0; CHUNK]);
+        let (mut outside, mut inside) = ([0.0; L], [0.0; L]);
         self.outside.e_chunk(&mu[..n], &mut outside);
         self.inside.e_chunk(&mu[..n], &mut inside);
         let sides = outside.iter().zip(&inside);

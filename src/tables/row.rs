@@ -84,7 +84,7 @@ impl AlbedoRow {
         self.between(i as usize, t)
     }
 
-    /// `E(μ)` of every `mu[k]`, into `e[k]` (`mu` has at most [`CHUNK`] lanes; the rest of
+    /// `E(μ)` of every `mu[k]`, into `e[k]` (`mu` has at most `L` lanes; the rest of
     /// `e` is left as it is): the numbers of [`e`](Self::e), in two passes, the positions
     /// first, then the reads of the row. A batched loop looks a chunk of lanes up this way
     /// before its own pass: the positions vectorise, and the pass that reads the table at
@@ -92,13 +92,9 @@ impl AlbedoRow {
     /// (a read at a different place per lane, a gather, keeps LLVM from vectorising a whole
     /// loop on a target with AVX2 and no AVX-512).
     #[inline(always)]
-    pub(crate) fn e_chunk(&self, mu: &[f32], e: &mut [f32; CHUNK]) {
-        debug_assert!(
-            mu.len() <= CHUNK,
-            "{} lanes for a chunk of {CHUNK}",
-            mu.len()
-        );
-        let mut node = [0_u32; CHUNK];
+    pub(crate) fn e_chunk<const L: usize>(&self, mu: &[f32], e: &mut [f32; L]) {
+        debug_assert!(mu.len() <= L, "{} lanes for a chunk of {L}", mu.len());
+        let mut node = [0_u32; L];
         for ((&mu, e), node) in mu.iter().zip(e.iter_mut()).zip(node.iter_mut()) {
             let (i, t) = position(mu);
             (*node, *e) = (i, t);
@@ -131,7 +127,8 @@ impl AlbedoRow {
     }
 }
 
-/// How many lanes [`AlbedoRow::e_chunk`] looks up at once.
+/// How many lanes the batched loops of the models that read albedo tables look up at once
+/// ([`AlbedoRow::e_chunk`]; a call of at most 64 lanes, that many).
 pub(crate) const CHUNK: usize = 256;
 
 /// The node `i` below `μ` and the fraction `t` of the way to the next, for
