@@ -757,10 +757,11 @@ fn the_compensated_models_equal_the_scalar_path() {
     assert_both_lobes("plastic compensated, black base", &lobes);
 }
 
-/// The loops that read a table run 256 lanes at a time (the tables looked up in passes of their
-/// own: the energy-compensated microfacet model's, for both compensations, both plastics' and the
-/// compensated glass's): batches of no lane, of one, and ending just before, at and just after a
-/// chunk's end, equal the scalar calls lane by lane, bit for bit. (The other tests' batches have
+/// The loops that read a table run 256 lanes at a time, 64 for a call of at most 64 (the
+/// tables looked up in passes of their own: the energy-compensated microfacet model's, for
+/// both compensations, both plastics' and the compensated glass's): batches of no lane, of
+/// one, and ending just before, at and just after a chunk's end, equal the scalar calls lane
+/// by lane, bit for bit. (The other tests' batches have
 /// 4,099 lanes: sixteen whole chunks and three lanes.)
 #[test]
 fn the_chunked_loops_equal_the_scalar_path_at_every_chunk_boundary() {
@@ -801,7 +802,7 @@ fn at_every_chunk_boundary<M: Checked>(model: &str, m: &M) {
 /// of the AVX2 and AVX-512 loops equal the scalar calls lane by lane, bit for bit.
 #[test]
 fn short_batches_equal_the_scalar_path_at_every_length() {
-    use lobe::bxdf::{CompensatedDielectric, Mix, Mono, TwoSided};
+    use lobe::bxdf::{CompensatedDielectric, Compensation, Mix, Mono, TwoSided};
     let gold = common::gold();
     let rgb = Vec3::new(0.8, 0.5, 0.2);
     let glass = Eta::new(1.5).unwrap();
@@ -816,7 +817,11 @@ fn short_batches_equal_the_scalar_path_at_every_length() {
     // same way (`at_every_chunk_boundary` checks the chunks' ends).
     let compensated = conductor.with_energy_compensation().unwrap();
     let compensated_glass = CompensatedDielectric::new(rough_glass).unwrap();
-    let plastic = Plastic::compensated(rgb, Ggx::isotropic(a(0.2)), glass).unwrap();
+    let plastic = Plastic::new(rgb, Ggx::isotropic(a(0.2)), glass).unwrap();
+    let compensated_plastic = Plastic::compensated(rgb, Ggx::isotropic(a(0.2)), glass).unwrap();
+    // Turquin's scaling: samples finished as drawn (no table read at the sampled direction).
+    let turquin = lobe::bxdf::CompensatedMicrofacet::new(conductor, Compensation::Turquin);
+    let turquin = turquin.unwrap();
     // The models built from others take stack space of 64 lanes for a call of at most 64,
     // and of a long chunk for a longer one: both sides of that.
     let mix = Mix::new(lambert, conductor, 0.5).unwrap();
@@ -833,7 +838,9 @@ fn short_batches_equal_the_scalar_path_at_every_length() {
         compare!("Glazed", &glazed);
         compare!("GGX gold compensated", &compensated);
         compare!("compensated glass", &compensated_glass);
-        compare!("compensated plastic", &plastic);
+        compare!("plastic", &plastic);
+        compare!("compensated plastic", &compensated_plastic);
+        compare!("GGX gold, Turquin", &turquin);
         compare!("Mix(Lambert, GGX gold)", &mix);
         compare!("TwoSided(GGX gold)", &two_sided);
         compare!("Mono(rough glass)", &mono);

@@ -184,13 +184,14 @@ pub trait Lanes: Spectrum {
 
 /// How many lanes the models built from other models (`Mix`, `TwoSided`, `Mono`) pass to
 /// their parts' batched calls at a time where they hold values of the spectrum, through stack
-/// space of this many lanes (a short call: of fewer, `parts::SHORT`).
+/// space of this many lanes (a call of at most [`SHORT`] lanes: of that many).
 pub(crate) const PART: usize = 256;
 
 /// The most lanes of a call that holds its chunk in stack space of this many lanes, not of a
-/// long chunk's ([`PART`], the tables' 256, `Mix`'s 1,024 densities): the space is zeroed on
-/// every call, and for a short call that cost more than the lanes did (`TwoSided(GGX gold)`'s
-/// `pdf` at 16 lanes a call spent more than half its time in `memset`, a profile under AVX2).
+/// long chunk's ([`PART`], the tables' 256, the 1,024 lanes of `Mix`'s densities, `TwoSided`'s
+/// and `Mono`'s `z` and values): the space is zeroed on every call, and for a short call that
+/// cost more than the lanes did (`TwoSided(GGX gold)`'s `pdf` at 16 lanes a call spent more
+/// than half its time in `memset`, a profile under AVX2).
 pub(crate) const SHORT: usize = 64;
 
 /// The chunks `start..end` of `n` lanes, `L` at a time.

@@ -70,11 +70,12 @@
 //! lane's side with a select); then the model's arithmetic runs in a loop that reads no
 //! table; `sample` then looks the tables up at the sampled directions and adds what needs
 //! them (the compensation lobe's value, the plastic's diffuse term) in a last pass. Each pass
-//! takes the chunk's slices one to an argument, as the plain loops do (at 16 lanes a call
-//! 0.4–0.8× of the scalar calls, AVX2). The chunk's buffers are on the stack (up to 14 KiB, for
-//! a `Vec4` compensated plastic's `sample`; zeroed on each call: a batch of a few lanes pays
-//! for that, one of 256 or more does not notice it). A microfacet model's loops, and the
-//! energy-compensated microfacet model's, take the Fresnel term channel by channel
+//! takes the chunk's slices one to an argument, as the plain loops do. The chunk's buffers
+//! are on the stack (up to 14 KiB, for a `Vec4` compensated plastic's `sample`), zeroed on
+//! each call: a call of at most 64 lanes takes buffers of 64 lanes, so that it does not pay
+//! for a long chunk's (at 16 lanes a call these models run at 0.34–0.49× of the scalar calls,
+//! AVX2). A microfacet model's loops, and the energy-compensated microfacet model's, take the
+//! Fresnel term channel by channel
 //! ([`Fresnel::eval_per_channel`](crate::fresnel::Fresnel::eval_per_channel)): the exact
 //! conductor's scalar `eval` puts an RGB spectrum's channels side by side in one SIMD
 //! register, which a loop cannot widen across calls (the same numbers either way). The other

@@ -128,7 +128,7 @@ impl AlbedoRow {
 }
 
 /// How many lanes the batched loops of the models that read albedo tables look up at once
-/// ([`AlbedoRow::e_chunk`]; a call of at most 64 lanes, that many).
+/// ([`AlbedoRow::e_chunk`]; a call of at most `batch::lanes::SHORT` lanes, that many).
 pub(crate) const CHUNK: usize = 256;
 
 /// The node `i` below `μ` and the fraction `t` of the way to the next, for
