@@ -29,6 +29,18 @@ use glam::Vec3;
 /// at 1,024 in a probe (AVX2).
 const WIDE: usize = 1024;
 
+/// Calls `$f::<L, ..>($args)` with `L` = [`SHORT`] for a call of at most that many lanes,
+/// else `$long`: a short call zeroes stack space of its own length, not a long chunk's.
+macro_rules! by_length {
+    ($n:expr, $long:ident, $f:ident::<L $(, $t:tt)*>($($a:expr),* $(,)?)) => {
+        if $n <= SHORT {
+            $f::<SHORT $(, $t)*>($($a),*)
+        } else {
+            $f::<$long $(, $t)*>($($a),*)
+        }
+    };
+}
+
 /// Stack space for a chunk of `L` 3-vectors.
 type Rows3<const L: usize> = [[f32; L]; 3];
 
@@ -178,20 +190,12 @@ where
         f: <A::Spectrum as Lanes>::Mut<'_>,
     ) -> Result<(), LengthError> {
         let n = same_length(&[wo.lanes()?, wi.lanes()?, A::Spectrum::lanes(&f)?])?;
-        if n <= SHORT {
-            mix_eval::<SHORT, _, _>(self, wo, wi, f, n)
-        } else {
-            mix_eval::<PART, _, _>(self, wo, wi, f, n)
-        }
+        by_length!(n, PART, mix_eval::<L, _, _>(self, wo, wi, f, n))
     }
 
     fn pdf_batch(&self, wo: Vec3s<'_>, wi: Vec3s<'_>, pdf: &mut [f32]) -> Result<(), LengthError> {
         let n = same_length(&[wo.lanes()?, wi.lanes()?, pdf.len()])?;
-        if n <= SHORT {
-            mix_pdf::<SHORT, _, _>(self, wo, wi, pdf, n)
-        } else {
-            mix_pdf::<WIDE, _, _>(self, wo, wi, pdf, n)
-        }
+        by_length!(n, WIDE, mix_pdf::<L, _, _>(self, wo, wi, pdf, n))
     }
 
     /// Each part samples the lanes whose `uc` chose it, gathered into stack space, and the
@@ -208,11 +212,7 @@ where
             return run(sample_kernel::<_, Plain>(self, wo, u, uc, out));
         }
         let n = sample_lanes(wo, u, uc, &out)?;
-        if n <= SHORT {
-            mix_sample(self, wo, u, uc, out, n, &mut Share::<SHORT>::new())
-        } else {
-            mix_sample(self, wo, u, uc, out, n, &mut Share::<PART>::new())
-        }
+        by_length!(n, PART, mix_sample::<L, _, _>(self, wo, u, uc, out, n))
     }
 }
 
@@ -271,7 +271,7 @@ where
     Ok(())
 }
 
-/// [`Mix`]'s `sample_batch` over `n` lanes, a chunk of `L` at a time through `share`.
+/// [`Mix`]'s `sample_batch` over `n` lanes, a chunk of `L` at a time through a [`Share`].
 #[inline(always)]
 fn mix_sample<const L: usize, A, B>(
     mix: &Mix<A, B>,
@@ -280,7 +280,6 @@ fn mix_sample<const L: usize, A, B>(
     uc: &[f32],
     mut out: SampleOut<'_, A::Spectrum>,
     n: usize,
-    share: &mut Share<L>,
 ) -> Result<(), LengthError>
 where
     A: Batch,
@@ -288,6 +287,7 @@ where
     A::Spectrum: Lanes,
 {
     let (wa, wb) = (1.0 - mix.weight(), mix.weight());
+    let share = &mut Share::<L>::new();
     for (start, end) in chunks::<L>(n) {
         let (o, v, c) = (wo.range(start, end), u.range(start, end), &uc[start..end]);
         share.gather(o, v, c, |uc| {
@@ -451,20 +451,12 @@ where
         f: <B::Spectrum as Lanes>::Mut<'_>,
     ) -> Result<(), LengthError> {
         let n = same_length(&[wo.lanes()?, wi.lanes()?, B::Spectrum::lanes(&f)?])?;
-        if n <= SHORT {
-            two_sided_eval::<SHORT, _>(self, wo, wi, f, n)
-        } else {
-            two_sided_eval::<WIDE, _>(self, wo, wi, f, n)
-        }
+        by_length!(n, WIDE, two_sided_eval::<L, _>(self, wo, wi, f, n))
     }
 
     fn pdf_batch(&self, wo: Vec3s<'_>, wi: Vec3s<'_>, pdf: &mut [f32]) -> Result<(), LengthError> {
         let n = same_length(&[wo.lanes()?, wi.lanes()?, pdf.len()])?;
-        if n <= SHORT {
-            two_sided_pdf::<SHORT, _>(self, wo, wi, pdf, n)
-        } else {
-            two_sided_pdf::<WIDE, _>(self, wo, wi, pdf, n)
-        }
+        by_length!(n, WIDE, two_sided_pdf::<L, _>(self, wo, wi, pdf, n))
     }
 
     fn sample_batch(
@@ -475,11 +467,7 @@ where
         out: SampleOut<'_, B::Spectrum>,
     ) -> Result<(), LengthError> {
         let n = sample_lanes(wo, u, uc, &out)?;
-        if n <= SHORT {
-            two_sided_sample::<SHORT, _>(self, wo, u, uc, out, n)
-        } else {
-            two_sided_sample::<WIDE, _>(self, wo, u, uc, out, n)
-        }
+        by_length!(n, WIDE, two_sided_sample::<L, _>(self, wo, u, uc, out, n))
     }
 }
 
@@ -566,11 +554,7 @@ where
 {
     fn eval_batch(&self, wo: Vec3s<'_>, wi: Vec3s<'_>, f: S::Mut<'_>) -> Result<(), LengthError> {
         let n = same_length(&[wo.lanes()?, wi.lanes()?, S::lanes(&f)?])?;
-        if n <= SHORT {
-            mono_eval::<SHORT, _, _>(self, wo, wi, f, n)
-        } else {
-            mono_eval::<WIDE, _, _>(self, wo, wi, f, n)
-        }
+        by_length!(n, WIDE, mono_eval::<L, _, _>(self, wo, wi, f, n))
     }
 
     fn pdf_batch(&self, wo: Vec3s<'_>, wi: Vec3s<'_>, pdf: &mut [f32]) -> Result<(), LengthError> {
@@ -585,11 +569,7 @@ where
         out: SampleOut<'_, S>,
     ) -> Result<(), LengthError> {
         let n = sample_lanes(wo, u, uc, &out)?;
-        if n <= SHORT {
-            mono_sample::<SHORT, _, _>(self, wo, u, uc, out, n)
-        } else {
-            mono_sample::<WIDE, _, _>(self, wo, u, uc, out, n)
-        }
+        by_length!(n, WIDE, mono_sample::<L, _, _>(self, wo, u, uc, out, n))
     }
 }
 
