@@ -157,18 +157,8 @@ fn pair_lanes<M, P: PairOp<M>>(
     iz: &[f32],
     out: <P::Out as Lanes>::Mut<'_>,
 ) {
-    let wo = Vec3s {
-        x: ox,
-        y: oy,
-        z: oz,
-    }
-    .range(0, n);
-    let wi = Vec3s {
-        x: ix,
-        y: iy,
-        z: iz,
-    }
-    .range(0, n);
+    let wo = Vec3s::first(ox, oy, oz, n);
+    let wi = Vec3s::first(ix, iy, iz, n);
     let mut out = P::Out::truncate(out, n);
     for k in 0..n {
         P::Out::put(&mut out, k, P::lane(m, wo.get(k), wi.get(k)));
@@ -252,12 +242,7 @@ fn sample_lanes<M: Prepare, O: LaneOp<M>>(
 ) where
     M::Spectrum: Lanes,
 {
-    let wo = Vec3s {
-        x: ox,
-        y: oy,
-        z: oz,
-    }
-    .range(0, n);
+    let wo = Vec3s::first(ox, oy, oz, n);
     let (u, uc) = (Vec2s { x: ux, y: uy }.range(0, n), &uc[..n]);
     let (ix, iy, iz) = (&mut ix[..n], &mut iy[..n], &mut iz[..n]);
     let mut f = M::Spectrum::truncate(f, n);

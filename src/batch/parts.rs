@@ -47,11 +47,7 @@ type Rows3<const L: usize> = [[f32; L]; 3];
 /// The first `n` lanes of `rows` as a [`Vec3s`].
 #[inline(always)]
 fn view<const L: usize>(rows: &Rows3<L>, n: usize) -> Vec3s<'_> {
-    Vec3s {
-        x: &rows[0][..n],
-        y: &rows[1][..n],
-        z: &rows[2][..n],
-    }
+    Vec3s::first(&rows[0], &rows[1], &rows[2], n)
 }
 
 /// The first `n` lanes of `rows` as a [`Vec3sMut`].

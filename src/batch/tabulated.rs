@@ -232,19 +232,13 @@ fn pair_chunk<const L: usize, M: TableLanes, P: ChunkPair<M>>(
     out: <P::Out as Lanes>::Mut<'_>,
 ) {
     let n = ox.len().min(L);
-    let (wo, wi) = (lanes3(ox, oy, oz, n), lanes3(ix, iy, iz, n));
+    let (wo, wi) = (Vec3s::first(ox, oy, oz, n), Vec3s::first(ix, iy, iz, n));
     let (e_wo, e_wi) = (&e_wo[..n], &e_wi[..n]);
     let mut out = P::Out::truncate(out, n);
     for k in 0..n {
         let at = m.prepare_from(wo.get(k), e_wo[k]);
         P::Out::put(&mut out, k, P::lane(m, &at, wi.get(k), e_wi[k]));
     }
-}
-
-/// The first `n` lanes of three slices, as a [`Vec3s`].
-#[inline(always)]
-fn lanes3<'a>(x: &'a [f32], y: &'a [f32], z: &'a [f32], n: usize) -> Vec3s<'a> {
-    Vec3s { x, y, z }.range(0, n)
 }
 
 /// `pdf[k] = pdf(wo[k], wi[k])` over the first `n` lanes, a chunk at a time.
@@ -383,7 +377,7 @@ fn draw_chunk<const L: usize, M: TableSample, O: TableSampleOp<M>>(
 ) {
     let n = ox.len().min(L);
     let (wo, u, uc) = (
-        lanes3(ox, oy, oz, n),
+        Vec3s::first(ox, oy, oz, n),
         Vec2s { x: ux, y: uy }.range(0, n),
         &uc[..n],
     );
