@@ -826,24 +826,18 @@ fn short_batches_equal_the_scalar_path_at_every_length() {
     // and of a long chunk for a longer one: both sides of that.
     let mix = Mix::new(lambert, conductor, 0.5).unwrap();
     let (two_sided, mono) = (TwoSided::new(conductor), Mono::<_, Vec3>::new(rough_glass));
+    // Each model by name, compared at `n` lanes.
+    macro_rules! compare {
+        ($n:expr; $($name:literal: $m:expr),* $(,)?) => {
+            $(compare_lanes(&format!("{}, {} lanes", $name, $n), $m, true, $n);)*
+        };
+    }
     for n in (0..=40).chain([63, 64, 65, 100]) {
-        macro_rules! compare {
-            ($name:expr, $m:expr) => {
-                compare_lanes(&format!("{}, {n} lanes", $name), $m, true, n)
-            };
-        }
-        compare!("Lambert", &lambert);
-        compare!("GGX gold", &conductor);
-        compare!("rough glass", &rough_glass);
-        compare!("Glazed", &glazed);
-        compare!("GGX gold compensated", &compensated);
-        compare!("compensated glass", &compensated_glass);
-        compare!("plastic", &plastic);
-        compare!("compensated plastic", &compensated_plastic);
-        compare!("GGX gold, Turquin", &turquin);
-        compare!("Mix(Lambert, GGX gold)", &mix);
-        compare!("TwoSided(GGX gold)", &two_sided);
-        compare!("Mono(rough glass)", &mono);
+        compare!(n; "Lambert": &lambert, "GGX gold": &conductor, "rough glass": &rough_glass,
+            "Glazed": &glazed, "GGX gold compensated": &compensated, "plastic": &plastic,
+            "compensated glass": &compensated_glass, "compensated plastic": &compensated_plastic,
+            "GGX gold, Turquin": &turquin, "Mix(Lambert, GGX gold)": &mix,
+            "TwoSided(GGX gold)": &two_sided, "Mono(rough glass)": &mono);
     }
 }
 
