@@ -480,6 +480,11 @@ fn slices_of_different_lengths_are_refused_without_writing() {
     use lobe::bxdf::{Mix, Mono, TwoSided};
     let lambert = Lambert::new(0.5_f32).unwrap();
     refuses_without_writing("Lambert", &lambert);
+    // The loops that read albedo tables a chunk at a time.
+    let schlick = Schlick::new(0.9_f32).unwrap();
+    let conductor = Microfacet::new(Ggx::isotropic(a(0.3)), Masking::HeightCorrelated, schlick);
+    let compensated = conductor.with_energy_compensation().unwrap();
+    refuses_without_writing("GGX compensated", &compensated);
     // The models built from others check the lengths before they call their parts.
     refuses_without_writing("Mix", &Mix::new(lambert, lambert, 0.5).unwrap());
     refuses_without_writing("TwoSided", &TwoSided::new(lambert));
@@ -525,7 +530,8 @@ fn refuses_without_writing<M: Batch<Spectrum = f32>>(name: &str, m: &M) {
     for n in [4, 0] {
         let wo = Soa::of(&vec![Vec3::Z; n]);
         let (half, uc) = (vec![0.5; n], vec![0.5; n.saturating_sub(1)]);
-        let (mut swi, mut lobe) = (Soa::unwritten(n), vec![Lobes::NONE; n]);
+        // `SPECULAR` alone (no side) is a lobe no sample has.
+        let (mut swi, mut lobe) = (Soa::unwritten(n), vec![Lobes::SPECULAR; n]);
         let (mut f, mut pdf, mut eta) = (vec![-1.0; n], vec![-1.0; n], vec![-1.0; n]);
         let out = SampleOut {
             wi: swi.view_mut(),
@@ -541,6 +547,9 @@ fn refuses_without_writing<M: Batch<Spectrum = f32>>(name: &str, m: &M) {
             f.iter().chain(&pdf).chain(&eta).all(|&x| x == -1.0),
             "{name}"
         );
+        let mut wi = swi.x.iter().chain(&swi.y).chain(&swi.z);
+        assert!(wi.all(|x| x.to_bits() == UNWRITTEN.to_bits()), "{name}");
+        assert!(lobe.iter().all(|&l| l == Lobes::SPECULAR), "{name}");
     }
 }
 
