@@ -73,7 +73,9 @@ fn put<const L: usize>(rows: &mut Rows3<L>, k: usize, w: Vec3) {
     (rows[0][k], rows[1][k], rows[2][k]) = (w.x, w.y, w.z);
 }
 
-/// The lane count of a sample call's slices, which must agree.
+/// The lane count of a sample call's slices, which must agree (inlined, as the plain calls'
+/// check is: `docs/batched-loops.md`, rule 13).
+#[inline(always)]
 fn sample_lanes<S: Lanes>(
     wo: Vec3s<'_>,
     u: Vec2s<'_>,
