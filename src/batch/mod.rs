@@ -321,6 +321,15 @@ fn run<K: Kernel>(kernel: Result<K, LengthError>) -> Result<(), LengthError> {
     Ok(())
 }
 
+/// Runs a batched call's kernel compiled for the target, without the dispatch: for a loop
+/// that only writes zeros (a delta model's `eval` and `pdf`), where the dispatch is most of a
+/// short call's cost.
+#[inline(always)]
+fn run_here<K: Kernel>(kernel: Result<K, LengthError>) -> Result<(), LengthError> {
+    kernel?.run();
+    Ok(())
+}
+
 /// The [`EvalKernel`] of a call, whose slices must have one length.
 #[inline(always)]
 fn eval_kernel<'a, 'f, M: Prepare, O>(
