@@ -164,7 +164,9 @@
 //! **Run-time dispatch.** The default `x86_64` target has only SSE2, and a library cannot
 //! ask its users for `-C target-cpu=native`. On x86 and x86_64 each batched call asks the
 //! [`pulp`](https://docs.rs/pulp) crate for the widest instruction set the CPU has — AVX-512
-//! (x86-64-v4), AVX2 with FMA (v3), or the baseline — and runs the loop compiled for it. pulp
+//! (x86-64-v4), AVX2 with FMA (v3), or the baseline — and runs the loop compiled for it (the
+//! delta models' `eval` and `pdf`, which only write zeros, skip the dispatch: at 16 lanes a call
+//! it cost more than their loop). pulp
 //! does the `unsafe` part (calling a `#[target_feature]` function after checking the CPU), so
 //! this crate keeps `#![forbid(unsafe_code)]`; it was chosen over hand-written intrinsics for
 //! that, and over `multiversion`, whose generated code is `unsafe` in the calling crate. Other
