@@ -279,6 +279,14 @@ pub trait Batch: Prepare + Clone
 where
     Self::Spectrum: Lanes,
 {
+    /// Whether the model has delta lobes only, so that its `eval` and `pdf` are zero for every
+    /// pair (the crate's mirror, smooth and thin glass). The provided
+    /// [`eval_batch`](Self::eval_batch) and [`pdf_batch`](Self::pdf_batch) then run their
+    /// loops, which only write zeros, compiled for the target without the run-time dispatch:
+    /// at 16 lanes a call the dispatch cost more than the loop. A hint only: the loops compute
+    /// every lane either way. `false` unless a model says otherwise.
+    const DELTA_ONLY: bool = false;
+
     /// `f[k] = eval(wo[k], wi[k])` for every lane `k`.
     ///
     /// # Errors
@@ -289,7 +297,12 @@ where
         wi: Vec3s<'_>,
         f: <Self::Spectrum as Lanes>::Mut<'_>,
     ) -> Result<(), LengthError> {
-        run(eval_kernel::<Self, Plain>(self, wo, wi, f))
+        let kernel = eval_kernel::<Self, Plain>(self, wo, wi, f);
+        if Self::DELTA_ONLY {
+            run_here(kernel)
+        } else {
+            run(kernel)
+        }
     }
 
     /// `pdf[k] = pdf(wo[k], wi[k])` for every lane `k`.
@@ -297,7 +310,12 @@ where
     /// # Errors
     /// [`LengthError`] when the slices differ in length (nothing is written).
     fn pdf_batch(&self, wo: Vec3s<'_>, wi: Vec3s<'_>, pdf: &mut [f32]) -> Result<(), LengthError> {
-        run(pdf_kernel::<Self, Plain>(self, wo, wi, pdf))
+        let kernel = pdf_kernel::<Self, Plain>(self, wo, wi, pdf);
+        if Self::DELTA_ONLY {
+            run_here(kernel)
+        } else {
+            run(kernel)
+        }
     }
 
     /// `sample(wo[k], u[k], uc[k])` for every lane `k`, written to `out`.
@@ -324,8 +342,8 @@ fn run<K: Kernel>(kernel: Result<K, LengthError>) -> Result<(), LengthError> {
 }
 
 /// Runs a batched call's kernel compiled for the target, without the dispatch: for a loop
-/// that only writes zeros (a delta model's `eval` and `pdf`), where the dispatch is most of a
-/// short call's cost.
+/// that only writes zeros ([`Batch::DELTA_ONLY`]), where the dispatch is most of a short
+/// call's cost.
 #[inline(always)]
 fn run_here<K: Kernel>(kernel: Result<K, LengthError>) -> Result<(), LengthError> {
     kernel?.run();

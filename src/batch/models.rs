@@ -14,7 +14,7 @@ use crate::spectrum::Spectrum;
 use super::kernel::{LaneOp, Plain};
 use super::tabulated::chunked;
 use super::tabulated::{TableLanes, TableOp, TableSample, TableSampleOp};
-use super::{Lanes, LengthError, SampleOut, Vec2s, Vec3s, run, run_here};
+use super::{Lanes, LengthError, SampleOut, Vec2s, Vec3s, run};
 use super::{eval_kernel, pdf_kernel, sample_kernel};
 use crate::bxdf::{At, BxdfSample, CompensatedState, Compensation, FixedForm, Prepare};
 use crate::bxdf::{CompensatedPlastic, PlasticState};
@@ -32,37 +32,19 @@ impl<S: Spectrum + Lanes> Batch for DiffuseTransmission<S> {}
 impl<S: Spectrum + Lanes> Batch for Sheen<S> {}
 impl<T: LayerInterface + Clone, B: Bxdf + Clone> Batch for Layered<T, B> where B::Spectrum: Lanes {}
 
-/// A model with delta lobes only: its `eval` and `pdf` are zero for every pair, and their
-/// batched loops, which only write zeros, run without the dispatch (a 16-lane call of the
-/// dispatched loop cost more than the scalar calls: `docs/batched-loops.md`, rule 13).
-/// `sample` runs the dispatched loop.
-macro_rules! delta_batch {
-    (impl$(<$g:ident: $b:path>)? for $t:ty $(where $w:ty: Lanes)?) => {
-        impl$(<$g: $b>)? Batch for $t $(where $w: Lanes)? {
-            fn eval_batch(
-                &self,
-                wo: Vec3s<'_>,
-                wi: Vec3s<'_>,
-                f: <Self::Spectrum as Lanes>::Mut<'_>,
-            ) -> Result<(), LengthError> {
-                run_here(eval_kernel::<Self, Plain>(self, wo, wi, f))
-            }
-
-            fn pdf_batch(
-                &self,
-                wo: Vec3s<'_>,
-                wi: Vec3s<'_>,
-                pdf: &mut [f32],
-            ) -> Result<(), LengthError> {
-                run_here(pdf_kernel::<Self, Plain>(self, wo, wi, pdf))
-            }
-        }
-    };
+// The models with delta lobes only: `eval` and `pdf` are zero for every pair.
+impl<F: Fresnel> Batch for Mirror<F>
+where
+    F::Spectrum: Lanes,
+{
+    const DELTA_ONLY: bool = true;
 }
-
-delta_batch!(impl<F: Fresnel> for Mirror<F> where F::Spectrum: Lanes);
-delta_batch!(impl for SmoothDielectric);
-delta_batch!(impl for ThinDielectric);
+impl Batch for SmoothDielectric {
+    const DELTA_ONLY: bool = true;
+}
+impl Batch for ThinDielectric {
+    const DELTA_ONLY: bool = true;
+}
 /// A model whose value depends on a masking term chosen at run time: the batched loops fix
 /// it at compile time, so that the loop does not branch on it.
 trait Masked: Prepare {
