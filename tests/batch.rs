@@ -490,6 +490,74 @@ fn slices_of_different_lengths_are_refused_without_writing() {
     refuses_without_writing("TwoSided", &TwoSided::new(lambert));
     let glass = SmoothDielectric::new(Eta::new(1.5).unwrap());
     refuses_without_writing("Mono", &Mono::<_, f32>::new(glass));
+    // The delta models' `eval` and `pdf` run without the dispatch (`Batch::DELTA_ONLY`).
+    refuses_without_writing("smooth glass", &glass);
+}
+
+/// `Batch::DELTA_ONLY` is set by the crate's models with delta lobes only, and is a hint only:
+/// a model that sets it wrongly still gets its scalar calls' numbers from the batched calls.
+#[test]
+fn delta_only_is_a_hint_set_by_the_delta_models() {
+    // Checked when the test compiles.
+    const { assert!(SmoothDielectric::DELTA_ONLY && ThinDielectric::DELTA_ONLY) };
+    const { assert!(<Mirror<Schlick<Vec3>> as Batch>::DELTA_ONLY) };
+    const { assert!(!Lambert::<Vec3>::DELTA_ONLY && !RoughDielectric::<Ggx>::DELTA_ONLY) };
+    let glass = Eta::new(1.5).unwrap();
+    let mirror = Mirror::new(Schlick::new(Vec3::new(0.9, 0.7, 0.5)).unwrap());
+    let specular = Lobes::SPECULAR_REFLECTION | Lobes::SPECULAR_TRANSMISSION;
+    let (smooth, thin) = (SmoothDielectric::new(glass), ThinDielectric::new(glass));
+    for lobes in [
+        Bxdf::lobes(&smooth),
+        Bxdf::lobes(&thin),
+        Bxdf::lobes(&mirror),
+    ] {
+        assert!(specular.contains(lobes), "{lobes:?}");
+    }
+    check(
+        "Lambert marked delta-only",
+        &Mislabelled(Lambert::new(Vec3::splat(0.5)).unwrap()),
+    );
+}
+
+/// A model that sets [`Batch::DELTA_ONLY`] without being delta-only.
+#[derive(Clone, Copy)]
+struct Mislabelled<M>(M);
+
+impl<M: Prepare> Prepare for Mislabelled<M> {
+    type Spectrum = M::Spectrum;
+    type Prepared = M::Prepared;
+
+    fn prepare(&self, wo: Vec3) -> M::Prepared {
+        self.0.prepare(wo)
+    }
+
+    fn eval_prepared(&self, at: &M::Prepared, wi: Vec3) -> M::Spectrum {
+        self.0.eval_prepared(at, wi)
+    }
+
+    fn pdf_prepared(&self, at: &M::Prepared, wi: Vec3) -> f32 {
+        self.0.pdf_prepared(at, wi)
+    }
+
+    fn sample_prepared(
+        &self,
+        at: &M::Prepared,
+        u: Vec2,
+        uc: f32,
+    ) -> Option<lobe::bxdf::BxdfSample<M::Spectrum>> {
+        self.0.sample_prepared(at, u, uc)
+    }
+
+    fn lobes(&self) -> Lobes {
+        self.0.lobes()
+    }
+}
+
+impl<M: Prepare + Clone> Batch for Mislabelled<M>
+where
+    M::Spectrum: Lanes,
+{
+    const DELTA_ONLY: bool = true;
 }
 
 /// `m`'s three batched calls refuse slices of different lengths, writing nothing, and accept

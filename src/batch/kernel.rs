@@ -7,8 +7,9 @@ use crate::spectrum::Spectrum;
 use core::marker::PhantomData;
 use glam::{Vec2, Vec3};
 
-/// A loop to compile for the widest SIMD the CPU has. `run` must be `#[inline(always)]`, so
-/// that it is compiled inside the dispatcher's `#[target_feature]` function, must re-slice its
+/// A loop to compile for the widest SIMD the CPU has (or, through `run_here` in the module
+/// above, for the target alone). `run` must be `#[inline(always)]`, so that it is compiled
+/// inside the dispatcher's `#[target_feature]` function, must re-slice its
 /// inputs to one length itself (or in an `#[inline(always)]` function it calls), so that the
 /// compiler sees that every index is in bounds, and runs the model from a local clone, so that
 /// the compiler sees that no store of the loop changes the model's parameters and that reading
@@ -18,7 +19,8 @@ use glam::{Vec2, Vec3};
 /// passed so are known not to overlap, while an output read out of a struct is compared with
 /// every input at run time before the vectorised loop, which short batches then skip
 /// (`docs/batched-loops.md`, rule 10; a spectrum's output channels, one `Lanes::Mut` value, are
-/// still compared with each other).
+/// still compared with each other, and in Oren-Nayar's and Disney diffuse's `eval` with every
+/// input too: rule 10's "Open").
 pub(crate) trait Kernel {
     /// The loop.
     fn run(self);

@@ -49,7 +49,9 @@
 //! to the loop one to an argument (so that the compiler knows no two overlap, checks at run
 //! time only a spectrum's output channels against each other, and vectorises from 8 lanes on
 //! under AVX2, 16 under AVX-512: a call of 16 lanes runs at 0.2–0.4× of the scalar calls for
-//! the GGX conductor under AVX2, `cargo bench --bench batched -- --lanes 16`), the per-lane
+//! the GGX conductor under AVX2, `cargo bench --bench batched -- --lanes 16`; the `eval` of
+//! Oren-Nayar and Disney diffuse is still checked against every input and vectorises only
+//! from 40 and 24 lanes, `docs/batched-loops.md`, rule 10), the per-lane
 //! code is inlined, its early returns become selects, and what the loop would
 //! branch on per call (a microfacet model's masking term) is fixed outside it. Each loop
 //! runs on its own copy of the model (a clone per batched call, hence [`Batch`]'s `Clone`
@@ -73,7 +75,7 @@
 //! takes the chunk's slices one to an argument, as the plain loops do. The chunk's buffers
 //! are on the stack (up to 14 KiB, for a `Vec4` compensated plastic's `sample`), zeroed on
 //! each call: a call of at most 64 lanes takes buffers of 64 lanes, so that it does not pay
-//! for a long chunk's (at 16 lanes a call these models run at 0.34–0.49× of the scalar calls,
+//! for a long chunk's (at 16 lanes a call these models run at 0.28–0.44× of the scalar calls,
 //! AVX2). A microfacet model's loops, and the energy-compensated microfacet model's, take the
 //! Fresnel term channel by channel
 //! ([`Fresnel::eval_per_channel`](crate::fresnel::Fresnel::eval_per_channel)): the exact
@@ -165,12 +167,12 @@
 //! ask its users for `-C target-cpu=native`. On x86 and x86_64 each batched call asks the
 //! [`pulp`](https://docs.rs/pulp) crate for the widest instruction set the CPU has — AVX-512
 //! (x86-64-v4), AVX2 with FMA (v3), or the baseline — and runs the loop compiled for it (the
-//! delta models' `eval` and `pdf`, which only write zeros, skip the dispatch: at 16 lanes a call
-//! it cost more than their loop). pulp
-//! does the `unsafe` part (calling a `#[target_feature]` function after checking the CPU), so
-//! this crate keeps `#![forbid(unsafe_code)]`; it was chosen over hand-written intrinsics for
-//! that, and over `multiversion`, whose generated code is `unsafe` in the calling crate. Other
-//! targets run the same loop compiled for the target's own features: the portable fallback.
+//! delta models' `eval` and `pdf`, which only write zeros, skip the dispatch, which cost more
+//! than their loop at 16 lanes a call: [`Batch::DELTA_ONLY`]). pulp does the `unsafe` part
+//! (calling a `#[target_feature]` function after checking the CPU), so this crate keeps
+//! `#![forbid(unsafe_code)]`; it was chosen over hand-written intrinsics for that, and over
+//! `multiversion`, whose generated code is `unsafe` in the calling crate. Other targets run
+//! the same loop compiled for the target's own features: the portable fallback.
 //! The dispatch needs the `std` feature (the default): without it, on x86, the batched calls
 //! run the baseline loop only, compiled for the target's own features (SSE2 on the default
 //! `x86_64` target; more if the build enables more, with `-C target-cpu` or `-C
@@ -284,7 +286,10 @@ where
     /// [`eval_batch`](Self::eval_batch) and [`pdf_batch`](Self::pdf_batch) then run their
     /// loops, which only write zeros, compiled for the target without the run-time dispatch:
     /// at 16 lanes a call the dispatch cost more than the loop. A hint only: the loops compute
-    /// every lane either way. `false` unless a model says otherwise.
+    /// every lane either way, so a model that sets it without being delta-only gets the same
+    /// numbers from the baseline loop (SSE2 on `x86_64`), without AVX2 or AVX-512. `false`
+    /// unless a model says otherwise, which says nothing about its lobes: the crate's models
+    /// built from delta parts (`TwoSided<Mirror>`, `Mono<SmoothDielectric>`) leave it `false`.
     const DELTA_ONLY: bool = false;
 
     /// `f[k] = eval(wo[k], wi[k])` for every lane `k`.
