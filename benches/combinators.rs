@@ -75,7 +75,7 @@ fn combinators(c: &mut Criterion) {
     model(
         c,
         "Sheen RGB r 0.5, exact Smith",
-        &Sheen::new(rho, 0.5).unwrap().with_exact_smith(),
+        &Sheen::new_exact_smith(rho, 0.5).unwrap(),
         &i,
     );
     let mut g = group(c, "Sheen construction");
@@ -85,6 +85,9 @@ fn combinators(c: &mut Criterion) {
     });
     g.bench_function("Sheen::with_exact_smith", |b| {
         b.iter(|| black_box(Sheen::new(black_box(rho), 0.5).unwrap().with_exact_smith()))
+    });
+    g.bench_function("Sheen::new_exact_smith", |b| {
+        b.iter(|| black_box(Sheen::new_exact_smith(black_box(rho), 0.5).unwrap()))
     });
     g.finish();
 }

@@ -1220,7 +1220,7 @@ fn push_compositions(c: &mut Configs) {
             "Sheen",
             format!("r {r}, exact Smith, colour (1, 0.5, 0) RGB"),
             None,
-            Sheen::new(rgb, r).unwrap().with_exact_smith(),
+            Sheen::new_exact_smith(rgb, r).unwrap(),
         );
     }
 }

@@ -238,7 +238,7 @@ fn models() -> Result<Vec<Entry>, ParamError> {
         entry("Sheen r=0.03", Sheen::new(1.0, 0.03)?),
         entry(
             "Sheen r=0.03, exact Smith",
-            Sheen::new(1.0, 0.03)?.with_exact_smith(),
+            Sheen::new_exact_smith(1.0, 0.03)?,
         ),
         entry(
             "CoatedDiffuse GGX α=0.3 η=1.5 ρ=0.8 (stochastic)",

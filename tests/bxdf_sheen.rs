@@ -212,3 +212,30 @@ fn parameters_are_validated() {
     assert!(s.albedo(0.5).max_channel() < 0.5);
     assert!(s.eval(Vec3::Z, -Vec3::Z) == Vec3::ZERO);
 }
+
+/// `new_exact_smith` builds what `new(…)?.with_exact_smith()` builds (every field, the albedo
+/// table included), integrating the albedo table once; `with_exact_smith` on a sheen that has
+/// the exact masking already changes nothing, and the constructor refuses what `new` refuses.
+#[test]
+fn new_exact_smith_is_new_then_with_exact_smith() {
+    let c = Vec3::new(0.9, 0.4, 0.1);
+    for r in [0.01, 0.03, 0.1, 0.5, 1.0] {
+        let built = Sheen::new_exact_smith(c, r).unwrap();
+        assert!(built.has_exact_smith());
+        assert_eq!(
+            built,
+            Sheen::new(c, r).unwrap().with_exact_smith(),
+            "r = {r}"
+        );
+        assert_eq!(built.with_exact_smith(), built, "r = {r}");
+        assert_ne!(built.albedo(0.5), Vec3::ZERO, "r = {r}");
+    }
+    for (color, r, param) in [
+        (1.0_f32, 0.0, "roughness"),
+        (1.0, f32::NAN, "roughness"),
+        (1.2, 0.5, "color"),
+    ] {
+        let e = Sheen::new_exact_smith(color, r).unwrap_err();
+        assert_eq!(e.param(), param);
+    }
+}

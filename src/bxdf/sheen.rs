@@ -77,11 +77,14 @@ const FIT_1: [f32; 5] = [21.5473, 3.82987, 0.19823, -1.97760, -4.32054];
 /// `r = 0.067`, where the peak passes 1 (1.04 for `r = 0.06`; above). With the exact Smith
 /// masking, energy conserving at every `r` (measured at `r = 0.01` and `0.03`).
 ///
-/// **Cost.** The exact masking costs 1.1 ms more construction (129 projected-area integrals,
-/// then the albedo table again: 2.02 ms against 0.90 for `new` alone, medians of three runs
-/// of `cargo bench --bench combinators`, 2026-11-27); each `Λ` is then two square roots, a
+/// **Cost.** Built by [`new_exact_smith`](Self::new_exact_smith), the exact masking costs
+/// its 129 projected-area integrals of construction more than `new`: 1.62–1.78 ms against
+/// 1.25–1.52 ms (three runs of `cargo bench --bench combinators -- "Sheen construction"`,
+/// 2026-11-30, on a slower machine than the figures above); `new(…)?.with_exact_smith()`,
+/// which integrates the albedo table a second time, 3.07–3.58 ms in the same runs. Each `Λ` is
+/// then two square roots, a
 /// cubic and a division, cheaper than the fit's powers, division and exponential: at
-/// `r = 0.5` `eval` 30.3 ns against 35.4 and `sample` 37.8 against 49.1 in the same runs.
+/// `r = 0.5` `eval` 30.3 ns against 35.4 and `sample` 37.8 against 49.1 (2026-11-27's runs).
 /// The option's field makes every `Sheen` 130 floats larger (about 690 bytes in all).
 ///
 /// ```
@@ -122,6 +125,24 @@ impl<S: Spectrum> Sheen<S> {
     /// # Errors
     /// [`ParamError`] naming `color` or `roughness` for NaN or out-of-range values.
     pub fn new(color: S, roughness: f32) -> Result<Self, ParamError> {
+        Ok(Self::untabulated(color, roughness)?.tabulated())
+    }
+
+    /// The sheen of [`new`](Self::new) with the exact Smith masking, as
+    /// [`with_exact_smith`](Self::with_exact_smith) makes it (the same value, field for field),
+    /// with its albedo table integrated once: `new(…)?.with_exact_smith()` integrates it twice,
+    /// first with the fitted masking.
+    ///
+    /// # Errors
+    /// [`ParamError`] naming `color` or `roughness` for NaN or out-of-range values.
+    pub fn new_exact_smith(color: S, roughness: f32) -> Result<Self, ParamError> {
+        Ok(Self::untabulated(color, roughness)?
+            .exact_area()
+            .tabulated())
+    }
+
+    /// The sheen's parameters checked and its constants computed, with an empty albedo table.
+    fn untabulated(color: S, roughness: f32) -> Result<Self, ParamError> {
         let color = unit_interval("color", color)?;
         if !(R_MIN..=1.0).contains(&roughness) {
             return Err(ParamError::new("roughness", roughness, "[0.01, 1]"));
@@ -143,7 +164,6 @@ impl<S: Spectrum> Sheen<S> {
             smith: None,
         };
         sheen.two_l_half = 2.0 * sheen.l(0.5);
-        sheen.tabulate_albedo();
         Ok(sheen)
     }
 
@@ -170,8 +190,22 @@ impl<S: Spectrum> Sheen<S> {
     /// assert!(fitted.albedo(grazing) > 1.6 && exact.albedo(grazing) < 0.7);
     /// # Ok::<(), lobe::ParamError>(())
     /// ```
+    ///
+    /// A sheen built to have the exact masking is better built by
+    /// [`new_exact_smith`](Self::new_exact_smith), which integrates the albedo table once (the
+    /// table of `new` is integrated here again: 0.9 ms of construction wasted). On a sheen that
+    /// already has it, this returns the sheen unchanged.
     #[must_use]
     pub fn with_exact_smith(self) -> Self {
+        if self.smith.is_some() {
+            return self;
+        }
+        self.exact_area().tabulated()
+    }
+
+    /// The same sheen with the exact Smith masking's projected-area table (its albedo table
+    /// left as it was).
+    fn exact_area(self) -> Self {
         let d = |_cos: f32, sin: f32| self.d_sin2(sin * sin);
         // Near grazing D ≈ e^(−cos²θm / 2r) changes over cos θm ≈ √r.
         let width = 1.0 / sqrt(self.roughness);
@@ -187,12 +221,10 @@ impl<S: Spectrum> Sheen<S> {
             area[j + 1] = projected_area(&d, mu, sin, width);
         }
         area[0] = area[2];
-        let mut sheen = Self {
+        Self {
             smith: Some(area),
             ..self
-        };
-        sheen.tabulate_albedo();
-        sheen
+        }
     }
 
     /// Whether the masking is the exact Smith `G1` of `D` (else the fit).
@@ -202,12 +234,13 @@ impl<S: Spectrum> Sheen<S> {
         self.smith.is_some()
     }
 
-    /// Fills the albedo table from the current masking.
-    fn tabulate_albedo(&mut self) {
+    /// The same sheen with its albedo table integrated under its current masking.
+    fn tabulated(mut self) -> Self {
         for i in 0..TABLE {
             let t = i as f32 / (TABLE - 1) as f32;
             self.albedo[i] = self.white_albedo((t * t).max(1e-4));
         }
+        self
     }
 
     /// `L(x)` of the fit.

@@ -37,7 +37,10 @@ wire! {
         #[serde(default, skip_serializing_if = "is_default")]
         exact_smith: bool = m.has_exact_smith(),
     } via |r| {
-        Sheen::new(r.color, r.roughness)
-            .map(|s| if r.exact_smith { s.with_exact_smith() } else { s })
+        if r.exact_smith {
+            Sheen::new_exact_smith(r.color, r.roughness)
+        } else {
+            Sheen::new(r.color, r.roughness)
+        }
     }
 }
