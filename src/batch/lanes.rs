@@ -16,7 +16,7 @@ pub struct Vec3s<'a> {
     pub z: &'a [f32],
 }
 
-impl Vec3s<'_> {
+impl<'a> Vec3s<'a> {
     /// The number of lanes.
     ///
     /// # Errors
@@ -42,9 +42,7 @@ impl Vec3s<'_> {
             z: &self.z[start..end],
         }
     }
-}
 
-impl<'a> Vec3s<'a> {
     /// The first `n` lanes of the coordinates `x`, `y`, `z` (a batched loop's slices, each
     /// passed as an argument of its own: `docs/batched-loops.md`, rule 10).
     #[inline(always)]
