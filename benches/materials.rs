@@ -186,7 +186,7 @@ fn diffuse(c: &mut Criterion) {
     materials(
         c,
         "Sheen RGB r 0.05..0.95, exact Smith",
-        |j| sheen(j).with_exact_smith(),
+        |j| Sheen::new_exact_smith(rho(j), 0.05 + 0.9 * t(j)).unwrap(),
         &i,
     );
 }

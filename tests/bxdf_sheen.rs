@@ -214,8 +214,8 @@ fn parameters_are_validated() {
 }
 
 /// `new_exact_smith` builds what `new(…)?.with_exact_smith()` builds (every field, the albedo
-/// table included), integrating the albedo table once; `with_exact_smith` on a sheen that has
-/// the exact masking already changes nothing, and the constructor refuses what `new` refuses.
+/// table included: a constructor that integrated its table before the exact masking's fails),
+/// `with_exact_smith` on it leaves it equal, and the constructor refuses what `new` refuses.
 #[test]
 fn new_exact_smith_is_new_then_with_exact_smith() {
     let c = Vec3::new(0.9, 0.4, 0.1);

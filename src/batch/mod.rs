@@ -51,8 +51,9 @@
 //! under AVX2, 16 under AVX-512: a call of 16 lanes runs at 0.2–0.4× of the scalar calls for
 //! the GGX conductor under AVX2, `cargo bench --bench batched -- --lanes 16`; the `eval` of
 //! Oren-Nayar and Disney diffuse is still checked against every input and vectorises only
-//! from 40 and 24 lanes, `docs/batched-loops.md`, rule 10; a call of fewer than 8 lanes fills
-//! no vector and is slower than the scalar calls, 1.1–3.9× at 4 lanes: call those), the per-lane
+//! from 40 and 24 lanes, `docs/batched-loops.md`, rule 10; under AVX2 a call of fewer than
+//! 8 lanes fills no vector, and at 4 lanes the calls the README times run at 1.1–3.9× of the
+//! scalar calls: call those), the per-lane
 //! code is inlined, its early returns become selects, and what the loop would
 //! branch on per call (a microfacet model's masking term) is fixed outside it. Each loop
 //! runs on its own copy of the model (a clone per batched call, hence [`Batch`]'s `Clone`

@@ -40,7 +40,8 @@ const FIT_1: [f32; 5] = [21.5473, 3.82987, 0.19823, -1.97760, -4.32054];
 ///
 /// with `(a, b, c, d, e)` interpolated between the paper's fits at `r = 0` and `r = 1` by
 /// `(1 − r)²` (table 1): a fit of the Smith `Λ` of this `D`, which has no closed form;
-/// [`with_exact_smith`](Self::with_exact_smith) tabulates the exact one instead. `c` is
+/// [`new_exact_smith`](Self::new_exact_smith) and [`with_exact_smith`](Self::with_exact_smith)
+/// tabulate the exact one instead. `c` is
 /// the sheen's colour (`[0, 1]` per channel) and `r ∈ [0.01, 1]` its roughness (the paper's
 /// `r`, used as is). No Fresnel term; the paper's terminator softening of `Λ` is not applied
 /// (it acts on the light's direction only, which would break reciprocity).
@@ -82,9 +83,10 @@ const FIT_1: [f32; 5] = [21.5473, 3.82987, 0.19823, -1.97760, -4.32054];
 /// 1.25–1.52 ms (three runs of `cargo bench --bench combinators -- "Sheen construction"`,
 /// 2026-11-30, on a slower machine than the figures above); `new(…)?.with_exact_smith()`,
 /// which integrates the albedo table a second time, 3.07–3.58 ms in the same runs. Each `Λ` is
-/// then two square roots, a
-/// cubic and a division, cheaper than the fit's powers, division and exponential: at
-/// `r = 0.5` `eval` 30.3 ns against 35.4 and `sample` 37.8 against 49.1 (2026-11-27's runs).
+/// then two square roots, a cubic and a division, cheaper than the fit's powers, division and
+/// exponential: at `r = 0.5` `eval` 30.3 ns against 35.4 and `sample` 37.8 against 49.1
+/// (medians of three runs of `cargo bench --bench combinators -- Sheen`, 2026-11-27; the
+/// README has their ranges).
 /// The option's field makes every `Sheen` 130 floats larger (about 690 bytes in all).
 ///
 /// ```
@@ -193,8 +195,9 @@ impl<S: Spectrum> Sheen<S> {
     ///
     /// A sheen built to have the exact masking is better built by
     /// [`new_exact_smith`](Self::new_exact_smith), which integrates the albedo table once (the
-    /// table of `new` is integrated here again: 0.9 ms of construction wasted). On a sheen that
-    /// already has it, this returns the sheen unchanged.
+    /// table of `new` is integrated here again: 3.07–3.58 ms against 1.62–1.78 in the runs of
+    /// the type's **Cost** paragraph). On a sheen that already has it, this returns the sheen
+    /// unchanged.
     #[must_use]
     pub fn with_exact_smith(self) -> Self {
         if self.smith.is_some() {
@@ -251,7 +254,8 @@ impl<S: Spectrum> Sheen<S> {
     }
 
     /// Smith's `Λ(μ)` for `μ = |cos θ|`: by the fit (eq. 3), or exact after
-    /// [`with_exact_smith`](Self::with_exact_smith); at most `f32::MAX`.
+    /// [`new_exact_smith`](Self::new_exact_smith) or [`with_exact_smith`](Self::with_exact_smith);
+    /// at most `f32::MAX`.
     #[inline(always)]
     #[must_use]
     pub fn lambda(&self, cos_theta: f32) -> f32 {
