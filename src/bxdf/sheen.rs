@@ -135,6 +135,18 @@ impl<S: Spectrum> Sheen<S> {
     /// with its albedo table integrated once: `new(…)?.with_exact_smith()` integrates it twice,
     /// first with the fitted masking.
     ///
+    /// ```
+    /// use lobe::bxdf::Sheen;
+    /// use lobe::Vec3;
+    /// let velvet = Sheen::new_exact_smith(Vec3::new(0.9, 0.2, 0.3), 0.03)?;
+    /// assert!(velvet.has_exact_smith());
+    /// // The exact masking keeps a smooth sheen's albedo below 1 at grazing (0.69 in the red
+    /// // channel at cos θo = 0.02, where the fitted masking's is 1.03).
+    /// assert!(velvet.albedo(0.02).max_element() < 1.0);
+    /// assert!(Sheen::new(Vec3::new(0.9, 0.2, 0.3), 0.03)?.albedo(0.02).x > 1.0);
+    /// # Ok::<(), lobe::ParamError>(())
+    /// ```
+    ///
     /// # Errors
     /// [`ParamError`] naming `color` or `roughness` for NaN or out-of-range values.
     pub fn new_exact_smith(color: S, roughness: f32) -> Result<Self, ParamError> {
