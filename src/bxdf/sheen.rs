@@ -41,10 +41,10 @@ const FIT_1: [f32; 5] = [21.5473, 3.82987, 0.19823, -1.97760, -4.32054];
 /// with `(a, b, c, d, e)` interpolated between the paper's fits at `r = 0` and `r = 1` by
 /// `(1 − r)²` (table 1): a fit of the Smith `Λ` of this `D`, which has no closed form;
 /// [`new_exact_smith`](Self::new_exact_smith) and [`with_exact_smith`](Self::with_exact_smith)
-/// tabulate the exact one instead. `c` is
-/// the sheen's colour (`[0, 1]` per channel) and `r ∈ [0.01, 1]` its roughness (the paper's
-/// `r`, used as is). No Fresnel term; the paper's terminator softening of `Λ` is not applied
-/// (it acts on the light's direction only, which would break reciprocity).
+/// tabulate the exact one instead. `c` is the sheen's colour (`[0, 1]` per channel) and
+/// `r ∈ [0.01, 1]` its roughness (the paper's `r`, used as is). No Fresnel term; the paper's
+/// terminator softening of `Λ` is not applied (it acts on the light's direction only, which
+/// would break reciprocity).
 ///
 /// Sampling: cosine-weighted directions (the lobe is wide; the paper samples uniformly).
 ///
