@@ -19,8 +19,8 @@ use glam::{Vec2, Vec3};
 /// passed so are known not to overlap, while an output read out of a struct is compared with
 /// every input at run time before the vectorised loop, which short batches then skip
 /// (`docs/batched-loops.md`, rule 10; a spectrum's output channels, one `Lanes::Mut` value, are
-/// still compared with each other, and in Oren-Nayar's and Disney diffuse's `eval` with every
-/// input too: rule 10's "Open").
+/// still compared with each other, and in the `eval` of Oren-Nayar, Disney diffuse and EON with
+/// every input too: rule 10's "Open").
 pub(crate) trait Kernel {
     /// The loop.
     fn run(self);
