@@ -903,6 +903,12 @@ fn short_batches_equal_the_scalar_path_at_every_length() {
     // and of a long chunk for a longer one: both sides of that.
     let mix = Mix::new(lambert, conductor, 0.5).unwrap();
     let (two_sided, mono) = (TwoSided::new(conductor), Mono::<_, Vec3>::new(rough_glass));
+    // The diffuse models whose `eval` computes the value on every lane (vectorised from 16 or
+    // 24 lanes under AVX2), and EON's exact form, which keeps the early zero.
+    let oren_nayar = OrenNayar::new(rgb, 0.4).unwrap();
+    let disney = DisneyDiffuse::new(rgb, Roughness::new(0.5).unwrap()).unwrap();
+    let eon = EnergyPreservingOrenNayar::new(rgb, 0.4).unwrap();
+    let eon_exact = eon.with_exact_albedo();
     // Each model by name, compared at `n` lanes.
     macro_rules! compare {
         ($n:expr; $($name:literal: $m:expr),* $(,)?) => {
@@ -914,7 +920,9 @@ fn short_batches_equal_the_scalar_path_at_every_length() {
             "Glazed": &glazed, "GGX gold compensated": &compensated, "plastic": &plastic,
             "compensated glass": &compensated_glass, "compensated plastic": &compensated_plastic,
             "GGX gold, Turquin": &turquin, "Mix(Lambert, GGX gold)": &mix,
-            "TwoSided(GGX gold)": &two_sided, "Mono(rough glass)": &mono);
+            "TwoSided(GGX gold)": &two_sided, "Mono(rough glass)": &mono,
+            "Oren-Nayar": &oren_nayar, "Disney diffuse": &disney, "EON": &eon,
+            "EON, exact albedo": &eon_exact);
     }
 }
 

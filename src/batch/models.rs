@@ -128,9 +128,10 @@ macro_rules! by_masking {
     };
 }
 
-/// `Batch` for a model whose loops fix something outside the loop: `eval` and `sample` chosen
-/// by `$by` (`by_masking`, `by_compensation`, `by_coat`, `by_form`) and run by `$run`, `pdf` run by
-/// `$run` with the lane operation `$pdf` (the density depends on neither). `run` for a model
+/// `Batch` for a model whose loops fix something outside the loop, or take lanes of their own:
+/// `eval` and `sample` chosen by `$by` (`by_masking`, `by_compensation`, `by_coat`, `by_form`,
+/// `by_cosine`) and run by `$run`, `pdf` run by `$run` with the lane operation `$pdf` (the
+/// density depends on neither). `run` for a model
 /// that reads no table (`$pdf` = `Plain`, as `Batch`'s own `pdf_batch`); `chunked`, a chunk
 /// of lanes at a time (the module `tabulated`; `$pdf` = `()`), for one that reads tables at
 /// each lane's directions.
@@ -175,15 +176,15 @@ macro_rules! batch_by {
 batch_by!(impl<D: NormalDistribution + Clone, F: Fresnel>
     for Microfacet<D, F> where F::Spectrum, by_masking, run, Plain);
 
-/// The lanes of a cosine-sampled diffuse model of the crate's whose `value` is arithmetic
-/// alone: `eval` computes the value for every pair and then keeps it where both directions are
-/// above the surface ([`Plain`] returns zero first). The same numbers; what changes is the
-/// loop: Plain's early zero left the loads of `x` and `y`, which only the value reads, behind
-/// the test, and LLVM vectorised them as masked loads. Without them Oren-Nayar's `eval`
-/// vectorises from 24 lanes a call, not 40, and Disney diffuse's and EON's from 16 (AVX2; the
-/// README's "Short batches"). The scalar calls keep the early zero: below the surface they
-/// skip the value's work. A model of the crate's only: `CosineSampled` promises nothing of
-/// `value` for a direction below the surface, where this op calls it.
+/// The lanes of a cosine-sampled diffuse model of the crate's whose `value` is defined (no
+/// panic, no lookup at a computed index) for every finite pair: `eval` computes the value for
+/// every pair and then keeps it where both directions are above the surface ([`Plain`]
+/// returns zero first). The same numbers; what changes is the loop: Plain's early zero left the
+/// loads of `x` and `y`, which only the value reads, behind the test, and LLVM vectorised them
+/// as masked loads, which it prices high under AVX2. Without them the loop vectorises from
+/// fewer lanes a call (rule 10's "Open" in `docs/batched-loops.md`). The scalar calls keep the
+/// early zero: below the surface it skips the value's work. A model of the crate's only:
+/// `CosineSampled` promises nothing of `value` below the surface, where this op calls it.
 struct Cosine;
 
 impl<M: CosineSampled> LaneOp<M> for Cosine {
@@ -215,8 +216,8 @@ macro_rules! by_cosine {
     };
 }
 
-batch_by!(impl<S: Spectrum> for OrenNayar<S> where S, by_cosine, run, Plain);
-batch_by!(impl<S: Spectrum> for DisneyDiffuse<S> where S, by_cosine, run, Plain);
+batch_by!(impl<S: Spectrum + Lanes> for OrenNayar<S> where S, by_cosine, run, Plain);
+batch_by!(impl<S: Spectrum + Lanes> for DisneyDiffuse<S> where S, by_cosine, run, Plain);
 
 /// EON's lanes with its albedo's form, exact or fitted, fixed ([`FixedForm`]).
 struct FixedExact<const EXACT: bool>;
@@ -224,7 +225,12 @@ struct FixedExact<const EXACT: bool>;
 impl<const EXACT: bool, S: Spectrum> LaneOp<EnergyPreservingOrenNayar<S>> for FixedExact<EXACT> {
     #[inline(always)]
     fn eval(m: &EnergyPreservingOrenNayar<S>, wo: Vec3, wi: Vec3) -> S {
-        Cosine::eval(&FixedForm::<S, EXACT>(m), wo, wi)
+        // The exact form calls `acosf`, so its loop stays scalar: the early zero saves work.
+        if EXACT {
+            Plain::eval(&FixedForm::<S, EXACT>(m), wo, wi)
+        } else {
+            Cosine::eval(&FixedForm::<S, EXACT>(m), wo, wi)
+        }
     }
 
     #[inline(always)]
