@@ -131,10 +131,9 @@ macro_rules! by_masking {
 /// `Batch` for a model whose loops fix something outside the loop, or take lanes of their own:
 /// `eval` and `sample` chosen by `$by` (`by_masking`, `by_compensation`, `by_coat`, `by_form`,
 /// `by_cosine`) and run by `$run`, `pdf` run by `$run` with the lane operation `$pdf` (the
-/// density depends on neither). `run` for a model
-/// that reads no table (`$pdf` = `Plain`, as `Batch`'s own `pdf_batch`); `chunked`, a chunk
-/// of lanes at a time (the module `tabulated`; `$pdf` = `()`), for one that reads tables at
-/// each lane's directions.
+/// density depends on neither). `run` for a model that reads no table (`$pdf` = `Plain`, as
+/// `Batch`'s own `pdf_batch`); `chunked`, a chunk of lanes at a time (the module `tabulated`;
+/// `$pdf` = `()`), for one that reads tables at each lane's directions.
 macro_rules! batch_by {
     (impl<$($g:ident: $b:ident $(+ $more:ident)*),*> for $t:ty
         where $s:ty, $by:ident, $run:ident, $pdf:ty) => {
