@@ -6,7 +6,8 @@
 
 mod common;
 
-use lobe::batch::{Batch, Lanes, LengthError, SampleOut, Vec2s, Vec3s, Vec3sMut};
+use common::soa::{Buffers, Soa, UNWRITTEN, same};
+use lobe::batch::{Batch, Lanes, LengthError, SampleOut, Vec2s, Vec3s};
 use lobe::bxdf::{
     BlinnPhong, BlinnPhongForm, Bxdf, DisneyDiffuse, EnergyPreservingOrenNayar, Glazed, Lambert,
     Lobes, Microfacet, Mirror, OrenNayar, Phong, Plastic, Prepare, RoughDielectric,
@@ -61,94 +62,6 @@ fn inputs() -> Inputs {
         .collect();
     let uc = (0..N).map(|_| unit(&mut rng)).collect();
     Inputs { wo, wi, u, uc }
-}
-
-/// One slice per coordinate.
-struct Soa {
-    x: Vec<f32>,
-    y: Vec<f32>,
-    z: Vec<f32>,
-}
-
-impl Soa {
-    fn of(v: &[Vec3]) -> Self {
-        Self {
-            x: v.iter().map(|w| w.x).collect(),
-            y: v.iter().map(|w| w.y).collect(),
-            z: v.iter().map(|w| w.z).collect(),
-        }
-    }
-    /// `n` lanes of [`UNWRITTEN`].
-    fn unwritten(n: usize) -> Self {
-        Self {
-            x: vec![UNWRITTEN; n],
-            y: vec![UNWRITTEN; n],
-            z: vec![UNWRITTEN; n],
-        }
-    }
-    fn view(&self) -> Vec3s<'_> {
-        Vec3s {
-            x: &self.x,
-            y: &self.y,
-            z: &self.z,
-        }
-    }
-    fn view_mut(&mut self) -> Vec3sMut<'_> {
-        Vec3sMut {
-            x: &mut self.x,
-            y: &mut self.y,
-            z: &mut self.z,
-        }
-    }
-    fn get(&self, k: usize) -> Vec3 {
-        Vec3::new(self.x[k], self.y[k], self.z[k])
-    }
-}
-
-/// What the output buffers hold before a batched call: a NaN whose bits no lane computes, so
-/// that a lane the loop skipped differs, bit for bit, from the scalar call's answer (which is
-/// often `+0`).
-const UNWRITTEN: f32 = f32::from_bits(0x7fc0_beef);
-
-/// A spectrum's batched output buffers, readable per lane.
-trait Buffers: Lanes + Spectrum {
-    type Store;
-    /// `n` lanes of [`UNWRITTEN`].
-    fn store(n: usize) -> Self::Store;
-    fn lanes_mut(s: &mut Self::Store) -> Self::Mut<'_>;
-    fn read(s: &Self::Store, k: usize) -> Self;
-}
-
-impl Buffers for f32 {
-    type Store = Vec<f32>;
-    fn store(n: usize) -> Vec<f32> {
-        vec![UNWRITTEN; n]
-    }
-    fn lanes_mut(s: &mut Vec<f32>) -> &mut [f32] {
-        s
-    }
-    fn read(s: &Vec<f32>, k: usize) -> f32 {
-        s[k]
-    }
-}
-
-impl Buffers for Vec3 {
-    type Store = Soa;
-    fn store(n: usize) -> Soa {
-        Soa::unwritten(n)
-    }
-    fn lanes_mut(s: &mut Soa) -> Vec3sMut<'_> {
-        s.view_mut()
-    }
-    fn read(s: &Soa, k: usize) -> Vec3 {
-        s.get(k)
-    }
-}
-
-/// Equal bit for bit, channel by channel: `-0` and `+0` differ (and a NaN equals only a NaN
-/// of the same bits: no lane computes one, and [`UNWRITTEN`] marks a lane not written).
-fn same<S: Spectrum>(a: S, b: S) -> bool {
-    (0..S::CHANNELS).all(|c| a.channel(c).to_bits() == b.channel(c).to_bits())
 }
 
 /// Within `tol` of each other, relative to the larger, channel by channel (two zeros agree).

@@ -232,7 +232,7 @@ fn every_model_is_total_at_the_corners() {
     assert_eq!(checked, MODELS as usize * 3 * 5 * 3 * 8 * 8 * 3);
 }
 
-/// The inputs `examples/fuzz.rs` found where a narrow lobe's sample density underflowed to a
+/// The inputs `examples/fuzz/main.rs` found where a narrow lobe's sample density underflowed to a
 /// subnormal (2e-40), so that the weight `f |cos θi| / pdf` overflowed to infinity: now the
 /// sample is refused, or its weight is finite.
 #[test]

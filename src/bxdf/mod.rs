@@ -823,7 +823,7 @@ pub(crate) fn delta_scale(wi: Vec3) -> Option<f32> {
 
 /// Whether a sample's density can be returned: positive, finite, and not subnormal, so that
 /// the weight `f |cos θi| / pdf` cannot overflow where a narrow lobe's density underflows
-/// (found by `examples/fuzz.rs`: a pdf of 2e-40 gave an infinite weight).
+/// (found by `examples/fuzz/main.rs`: a pdf of 2e-40 gave an infinite weight).
 #[inline(always)]
 #[must_use]
 pub(crate) fn usable_pdf(pdf: f32) -> bool {

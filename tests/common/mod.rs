@@ -6,6 +6,7 @@ pub mod exact;
 pub mod laws;
 pub mod quadrature;
 pub mod reference;
+pub mod soa;
 pub mod wire;
 
 use lobe::Vec3;

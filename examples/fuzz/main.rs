@@ -20,7 +20,10 @@
 //! refraction pair through the macro-surface (for the dielectrics), a slightly perturbed
 //! mirror pair; directions of length `1 ± 1e-6`; `u` and `uc` at `0`, `1 − 2⁻²⁴`, `1` and
 //! random. For each input it calls `eval`, `pdf`, `sample`, `prepare`, `eval_prepared`,
-//! `pdf_prepared`, `eval_pdf_prepared` and `sample_prepared`, and counts, per model:
+//! `pdf_prepared`, `eval_pdf_prepared` and `sample_prepared`; then it passes each batch of
+//! 4,096 inputs (the corner grid: one batch) to `eval_batch`, `pdf_batch` and `sample_batch`
+//! as one call of as many lanes, on the instruction set the run-time dispatch picks for this
+//! CPU (`lanes.rs`). It counts, per model:
 //!
 //! * **NaN**, **inf**, **neg**: results (a value's channel, a density, a sample's direction,
 //!   value or pdf) that are NaN, infinite, or negative;
@@ -31,8 +34,12 @@
 //! * **split**: `eval_pdf_prepared` differing from `(eval_prepared, pdf_prepared)` in any bit
 //!   (the models share work between the two, and a renderer's MIS relies on the two paths
 //!   agreeing);
+//! * **batched**: lanes of a batched call whose answer differs from the scalar call's in any
+//!   bit (`lobe::batch` promises the scalar path's numbers; a lane without a sample must have
+//!   every output zero and the lobe `Lobes::NONE`), one count per lane and call;
 //! * **panics**: inputs whose calls panicked (each batch of calls runs under
-//!   `catch_unwind`; a batch that panicked is replayed input by input to find them).
+//!   `catch_unwind`; a batch that panicked is replayed input by input to find them, a batched
+//!   call one lane a call).
 //!
 //! It prints the table (with, per model, how many of the bad results came from inputs with a
 //! random number equal to 1, outside the documented `[0, 1)`), then, when a count is not zero,
@@ -41,6 +48,7 @@
 //! bits), and exits with status 1. Deterministic: every configuration draws from its own
 //! seeded `Pcg32` stream, whatever the number of threads.
 
+use lobe::batch::Batch;
 use lobe::bxdf::{
     BlinnPhong, BlinnPhongForm, Bxdf, BxdfSample, DisneyDiffuse, EnergyPreservingOrenNayar, Glazed,
     Lambert, Microfacet, Mirror, OrenNayar, Phong, Plastic, Prepare, RoughDielectric,
@@ -62,6 +70,18 @@ use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Instant;
+
+mod lanes;
+#[path = "../../tests/common/soa.rs"]
+mod soa;
+use lanes::Scalar;
+use soa::Buffers;
+
+/// A model the fuzz takes: its scalar and batched calls, with a spectrum whose batched
+/// outputs [`lanes::check`] can hold (`f32` or RGB).
+trait Fuzzed: Batch<Spectrum: Buffers> {}
+
+impl<M: Batch<Spectrum: Buffers>> Fuzzed for M {}
 
 /// The seed of every configuration's stream (the stream is the configuration's index).
 const SEED: u64 = 0xf022;
@@ -230,16 +250,18 @@ enum Kind {
     NonUnit,
     BadSample,
     Split,
+    Batched,
     Panic,
 }
 
-const KINDS: [Kind; 7] = [
+const KINDS: [Kind; 8] = [
     Kind::Nan,
     Kind::Inf,
     Kind::Negative,
     Kind::NonUnit,
     Kind::BadSample,
     Kind::Split,
+    Kind::Batched,
     Kind::Panic,
 ];
 
@@ -252,6 +274,7 @@ impl Kind {
             Kind::NonUnit => "non-unit",
             Kind::BadSample => "bad sample",
             Kind::Split => "split",
+            Kind::Batched => "batched",
             Kind::Panic => "panics",
         }
     }
@@ -402,12 +425,17 @@ fn same_bits<S: Spectrum>(a: S, b: S) -> bool {
     (0..S::CHANNELS).all(|c| a.channel(c).to_bits() == b.channel(c).to_bits())
 }
 
-/// Every call on one input.
-fn check_input<M: Prepare>(m: &M, x: &Input, t: &mut Tally) {
+/// Every scalar call on one input; returns `eval`'s, `pdf`'s and `sample`'s answers.
+fn check_input<M: Prepare>(m: &M, x: &Input, t: &mut Tally) -> Scalar<M::Spectrum> {
     t.inputs += 1;
-    t.value("eval", x, Bxdf::eval(m, x.wo, x.wi));
-    t.density("pdf", x, Bxdf::pdf(m, x.wo, x.wi));
-    t.sample("sample", x, Bxdf::sample(m, x.wo, x.u, x.uc));
+    let want = Scalar {
+        f: Bxdf::eval(m, x.wo, x.wi),
+        pdf: Bxdf::pdf(m, x.wo, x.wi),
+        sample: Bxdf::sample(m, x.wo, x.u, x.uc),
+    };
+    t.value("eval", x, want.f);
+    t.density("pdf", x, want.pdf);
+    t.sample("sample", x, want.sample);
     let at = m.prepare(x.wo);
     let f = m.eval_prepared(&at, x.wi);
     t.value("eval_prepared", x, f);
@@ -427,6 +455,7 @@ fn check_input<M: Prepare>(m: &M, x: &Input, t: &mut Tally) {
         );
     }
     t.sample("sample_prepared", x, m.sample_prepared(&at, x.u, x.uc));
+    want
 }
 
 thread_local! {
@@ -434,17 +463,21 @@ thread_local! {
     static PANIC: RefCell<String> = const { RefCell::new(String::new()) };
 }
 
-/// Runs `inputs` through `m`; a batch that panics is replayed input by input, so that the
+/// Runs `inputs` through `m`'s scalar calls, then as one batched call through its batched
+/// ones ([`lanes::check`]); a batch that panics is replayed input by input, so that the
 /// panicking inputs are counted and shown and the others still checked.
-fn check_batch<M: Prepare>(m: &M, inputs: &[Input], t: &mut Tally) {
+fn check_batch<M: Fuzzed>(m: &M, inputs: &[Input], t: &mut Tally) {
     let mut batch = Tally::default();
     let ok = catch_unwind(AssertUnwindSafe(|| {
-        for x in inputs {
-            check_input(m, x, &mut batch);
-        }
+        let want: Vec<_> = inputs
+            .iter()
+            .map(|x| check_input(m, x, &mut batch))
+            .collect();
+        (want, batch)
     }));
-    if ok.is_ok() {
+    if let Ok((want, batch)) = ok {
         t.add(batch);
+        check_lanes(m, inputs, &want, t);
         return;
     }
     for x in inputs {
@@ -455,6 +488,30 @@ fn check_batch<M: Prepare>(m: &M, inputs: &[Input], t: &mut Tally) {
             t.inputs += 1;
             let message = PANIC.with(|p| p.borrow().clone());
             t.fail(Kind::Panic, "one of the calls", x, &message);
+        }
+    }
+}
+
+/// [`lanes::check`] on `inputs`, whose scalar answers are `want`; a batched call that panics
+/// is replayed one lane a call, so that the panicking lanes are counted and shown.
+fn check_lanes<M: Fuzzed>(m: &M, inputs: &[Input], want: &[Scalar<M::Spectrum>], t: &mut Tally) {
+    let mut batch = Tally::default();
+    if catch_unwind(AssertUnwindSafe(|| {
+        lanes::check(m, inputs, want, &mut batch)
+    }))
+    .is_ok()
+    {
+        t.add(batch);
+        return;
+    }
+    for (k, x) in inputs.iter().enumerate() {
+        let mut one = Tally::default();
+        let lane = |one: &mut Tally| lanes::check(m, &inputs[k..=k], &want[k..=k], one);
+        if catch_unwind(AssertUnwindSafe(|| lane(&mut one))).is_ok() {
+            t.add(one);
+        } else {
+            let message = PANIC.with(|p| p.borrow().clone());
+            t.fail(Kind::Panic, "one of the batched calls", x, &message);
         }
     }
 }
@@ -484,7 +541,7 @@ impl Configs {
     /// dielectric interface, makes the inputs' refraction pairs.
     fn push<M>(&mut self, model: &str, params: String, eta: Option<Eta>, m: M)
     where
-        M: Prepare + Send + Sync + 'static,
+        M: Fuzzed + Send + Sync + 'static,
     {
         let run: Run = Box::new(move |n, stream| {
             let mut rng = Pcg32::new(SEED, stream);
@@ -554,7 +611,7 @@ where
     fn one<D, F>(c: &mut Configs, row: &str, what: String, d: D, masking: Masking, f: F)
     where
         D: NormalDistribution + Copy + Send + Sync + 'static,
-        F: Fresnel + Send + Sync + 'static,
+        F: Fresnel<Spectrum: Buffers> + Clone + Send + Sync + 'static,
     {
         c.push(row, what, None, Microfacet::new(d, masking, f));
     }
@@ -1308,7 +1365,8 @@ fn main() {
     let corners = corner_inputs(None, &mut Pcg32::new(0, 0)).len();
     writeln!(
         out,
-        "lobe fuzz: {} configurations, {corners} corner + {n} random inputs each, 8 calls per input",
+        "lobe fuzz: {} configurations, {corners} corner + {n} random inputs each, \
+         8 scalar calls and 3 batched lanes per input",
         configs.len()
     )
     .unwrap();
