@@ -195,7 +195,7 @@ impl<S: Spectrum> BlinnPhong<S> {
 
     /// `((n·h)^p, |wo + wi|)` for `wo`, `wi` above the surface; `(0, 1)` when `wo + wi`
     /// underflows (subnormal, opposite grazing directions).
-    #[inline]
+    #[inline(always)]
     fn lobe(&self, wo: Vec3, wi: Vec3) -> (f32, f32) {
         let s = wo + wi;
         let sxy = s.x * s.x + s.y * s.y;
@@ -208,20 +208,20 @@ impl<S: Spectrum> BlinnPhong<S> {
     }
 
     /// The BRDF from `(n·h)^p`.
-    #[inline]
+    #[inline(always)]
     fn value(&self, (cos_pow, _): (f32, f32)) -> S {
         self.diffuse_over_pi + self.glossy * cos_pow
     }
 
     /// The mixture density from `cos θi`, `(n·h)^p` and `|wo + wi| = 2 (wo·h)`.
-    #[inline]
+    #[inline(always)]
     fn density(&self, cos_i: f32, (cos_pow, len): (f32, f32)) -> f32 {
         self.p_diffuse * cosine_hemisphere_pdf(cos_i) + self.pdf_glossy * cos_pow / len
     }
 
     /// A direction of the glossy lobe: `wo` reflected about a half vector drawn from
     /// `cos^p θh`; below the surface when `wo·h ≤ 0`, which the caller refuses.
-    #[inline]
+    #[inline(always)]
     fn sample_glossy(&self, wo: Vec3, u: Vec2) -> Vec3 {
         reflect_away(
             wo,

@@ -93,7 +93,7 @@ impl<S: Spectrum> DisneyDiffuse<S> {
 impl<S: Spectrum> CosineSampled for DisneyDiffuse<S> {
     type Spectrum = S;
 
-    #[inline]
+    #[inline(always)]
     fn value(&self, wo: Vec3, wi: Vec3) -> S {
         // cos²θd = (wi·h)² = (1 + wi·wo)/2 for unit vectors.
         let cos2_d = (0.5 + 0.5 * wo.dot(wi)).max(0.0);

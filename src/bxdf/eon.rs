@@ -179,7 +179,7 @@ impl<S: Spectrum> EnergyPreservingOrenNayar<S> {
 
     /// `max(0, C1 − G(μ)/π)`, proportional to the single-scattering lobe's missing albedo
     /// `1 − E_F(μ)`; for `μ ∈ (0, 1]`.
-    #[inline]
+    #[inline(always)]
     fn compensation(&self, mu: f32) -> f32 {
         if self.exact {
             Self::compensation_in::<true>(mu)
@@ -249,7 +249,7 @@ fn multiple_scattering_albedo<S: Spectrum>(reflectance: S, r: f32) -> S {
 
 /// The exact `G(μ)/π` of the FON albedo, for `μ ∈ [0, 1]`, with the `(1 − sin³θ)/cos θ`
 /// term rewritten as `cos θ (1 + sin θ + sin²θ)/(1 + sin θ)` (finite at the horizon).
-#[inline]
+#[inline(always)]
 fn g_exact_over_pi(mu: f32) -> f32 {
     let sin = crate::math::safe_sqrt(1.0 - mu * mu);
     let theta = crate::math::safe_acos(mu);
@@ -260,7 +260,7 @@ fn g_exact_over_pi(mu: f32) -> f32 {
 impl<S: Spectrum> CosineSampled for EnergyPreservingOrenNayar<S> {
     type Spectrum = S;
 
-    #[inline]
+    #[inline(always)]
     fn value(&self, wo: Vec3, wi: Vec3) -> S {
         if self.exact {
             self.value_in::<true>(wo, wi)

@@ -51,7 +51,7 @@ impl<S: Spectrum> Lambert<S> {
 impl<S: Spectrum> CosineSampled for Lambert<S> {
     type Spectrum = S;
 
-    #[inline]
+    #[inline(always)]
     fn value(&self, _wo: Vec3, _wi: Vec3) -> S {
         self.reflectance * FRAC_1_PI
     }

@@ -156,7 +156,7 @@ impl<S: Spectrum> OrenNayar<S> {
 impl<S: Spectrum> CosineSampled for OrenNayar<S> {
     type Spectrum = S;
 
-    #[inline]
+    #[inline(always)]
     fn value(&self, wo: Vec3, wi: Vec3) -> S {
         // max(0, cos Δφ) sin α tan β = max(0, wi.xy·wo.xy) / max(cos θi, cos θo).
         let s = wo.x * wi.x + wo.y * wi.y;

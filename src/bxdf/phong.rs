@@ -154,7 +154,7 @@ impl<S: Spectrum> Phong<S> {
     }
 
     /// `cos^p α` for the angle `α` between `r = reflect_away(wo, n)` and `wi`, zero beyond 90°.
-    #[inline]
+    #[inline(always)]
     fn lobe(&self, wo: Vec3, wi: Vec3) -> f32 {
         // r − wi up to the sign of x and y, which the square drops; symmetric in wo, wi.
         let d = Vec3::new(wo.x + wi.x, wo.y + wi.y, wo.z - wi.z);
@@ -164,19 +164,19 @@ impl<S: Spectrum> Phong<S> {
     }
 
     /// The BRDF from the lobe's value `cos^p α`.
-    #[inline]
+    #[inline(always)]
     fn value(&self, lobe: f32) -> S {
         self.diffuse + self.glossy * lobe
     }
 
     /// The mixture density from `cos θi` and `cos^p α`.
-    #[inline]
+    #[inline(always)]
     fn density(&self, cos_i: f32, lobe: f32) -> f32 {
         self.p_diffuse * cosine_hemisphere_pdf(cos_i) + self.pdf_glossy * lobe
     }
 
     /// A direction of the glossy lobe: `cos^p` around the mirror direction of `wo`.
-    #[inline]
+    #[inline(always)]
     fn sample_glossy(&self, wo: Vec3, u: Vec2) -> Vec3 {
         let r = Vec3::new(-wo.x, -wo.y, wo.z);
         let local = crate::sampling::cosine_power_hemisphere(u, self.power.exponent());
@@ -188,7 +188,7 @@ diffuse_glossy_model!(Phong);
 
 /// `cos^p` of an angle given `1 − cos ≥ 0`; zero at and beyond 90° (`1 − cos ≥ 1`), even for
 /// `p = 0`. Near the axis it is `exp(p ln(1 − t))` from the precise `t = 1 − cos`.
-#[inline]
+#[inline(always)]
 fn cos_power(one_minus_cos: f32, power: Power) -> f32 {
     if one_minus_cos < 0.5 {
         exp(power.exponent() * ln_1p(-one_minus_cos))
