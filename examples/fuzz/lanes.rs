@@ -3,13 +3,14 @@
 //!
 //! `tests/batch.rs` compares the two paths over 4,099 adversarial lanes per model; this runs
 //! every configuration of the fuzz (widths and indices at the ends of their ranges, every
-//! masking term and transport mode) through them, each `catch_unwind` batch of inputs as one
-//! batched call of as many lanes, on the instruction set the run-time dispatch picks for this
-//! CPU. A lane without a sample must have every output zero and the lobe
+//! masking term and transport mode) through them, each `catch_unwind` batch of inputs cut into
+//! calls from 1 to 1,025 lanes long ([`CALLS`]), on the instruction set the run-time dispatch
+//! picks for this CPU. A lane without a sample must have every output zero and the lobe
 //! [`Lobes::NONE`](lobe::bxdf::Lobes::NONE), as `SampleOut` documents.
 
 use super::soa::{Buffers, Soa, UNWRITTEN, same};
 use super::{Input, Kind, Tally};
+use core::ops::Range;
 use lobe::batch::{Batch, SampleOut, Vec2s};
 use lobe::bxdf::{BxdfSample, Lobes};
 use lobe::{Spectrum, Vec3};
@@ -21,8 +22,30 @@ pub struct Scalar<S> {
     pub sample: Option<BxdfSample<S>>,
 }
 
-/// Runs `inputs` through `m`'s batched `eval`, `pdf` and `sample`, one call each, and counts a
-/// [`Kind::Batched`] failure for every lane and call whose answer differs from `want`'s.
+/// The lengths of the batched calls that [`check`] cuts its inputs into, in turn (what is left
+/// after the last is one more call): around the vector widths (8 and 16 lanes), the longest
+/// call that takes short buffers (64) and the chunks of 256 lanes, so that every form of the
+/// loops (short buffers, chunked passes, the lanes after the last full vector or chunk) meets
+/// the adversarial lanes.
+const CALLS: [usize; 19] = [
+    1, 2, 7, 8, 9, 15, 16, 17, 31, 33, 63, 64, 65, 255, 256, 257, 511, 1024, 1025,
+];
+
+/// The lanes of each batched call over `n` inputs: [`CALLS`], then the rest.
+fn calls(n: usize) -> impl Iterator<Item = Range<usize>> {
+    let lengths = CALLS.into_iter().chain(core::iter::repeat(n));
+    lengths
+        .scan(0, move |start, len| {
+            let r = *start..n.min(*start + len);
+            *start = r.end;
+            Some(r)
+        })
+        .take_while(|r| !r.is_empty())
+}
+
+/// Runs `inputs` through `m`'s batched `eval`, `pdf` and `sample`, in calls of the lengths
+/// [`CALLS`], and counts a [`Kind::Batched`] failure for every lane and call whose answer
+/// differs from `want`'s.
 pub fn check<M>(m: &M, inputs: &[Input], want: &[Scalar<M::Spectrum>], t: &mut Tally)
 where
     M: Batch<Spectrum: Buffers>,
@@ -40,18 +63,24 @@ where
     // Values no lane writes, so that a lane the loop skipped shows.
     let (mut s_lobe, mut s_eta) = (vec![Lobes::SPECULAR_TRANSMISSION; n], vec![-1.0; n]);
     let lengths = "the inputs' and outputs' slices have one length";
-    m.eval_batch(wo.view(), wi.view(), M::Spectrum::lanes_mut(&mut f))
-        .expect(lengths);
-    m.pdf_batch(wo.view(), wi.view(), &mut pdf).expect(lengths);
-    let out = SampleOut {
-        wi: s_wi.view_mut(),
-        f: M::Spectrum::lanes_mut(&mut s_f),
-        pdf: &mut s_pdf,
-        lobe: &mut s_lobe,
-        eta: &mut s_eta,
-    };
-    m.sample_batch(wo.view(), Vec2s { x: &ux, y: &uy }, &uc, out)
-        .expect(lengths);
+    for r in calls(n) {
+        let (o, i) = (wo.range(r.clone()), wi.range(r.clone()));
+        m.eval_batch(o, i, M::Spectrum::lanes_range(&mut f, r.clone()))
+            .expect(lengths);
+        m.pdf_batch(o, i, &mut pdf[r.clone()]).expect(lengths);
+        let out = SampleOut {
+            wi: s_wi.range_mut(r.clone()),
+            f: M::Spectrum::lanes_range(&mut s_f, r.clone()),
+            pdf: &mut s_pdf[r.clone()],
+            lobe: &mut s_lobe[r.clone()],
+            eta: &mut s_eta[r.clone()],
+        };
+        let u = Vec2s {
+            x: &ux[r.clone()],
+            y: &uy[r.clone()],
+        };
+        m.sample_batch(o, u, &uc[r], out).expect(lengths);
+    }
 
     for (k, (x, w)) in inputs.iter().zip(want).enumerate() {
         let got = M::Spectrum::read(&f, k);

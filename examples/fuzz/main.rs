@@ -21,9 +21,9 @@
 //! mirror pair; directions of length `1 ± 1e-6`; `u` and `uc` at `0`, `1 − 2⁻²⁴`, `1` and
 //! random. For each input it calls `eval`, `pdf`, `sample`, `prepare`, `eval_prepared`,
 //! `pdf_prepared`, `eval_pdf_prepared` and `sample_prepared`; then it passes each batch of
-//! 4,096 inputs (the corner grid: one batch) to `eval_batch`, `pdf_batch` and `sample_batch`
-//! as one call of as many lanes, on the instruction set the run-time dispatch picks for this
-//! CPU (`lanes.rs`). It counts, per model:
+//! 4,096 inputs (the corner grid: one batch) to `eval_batch`, `pdf_batch` and `sample_batch`,
+//! cut into calls of 1 to 1,025 lanes, on the instruction set the run-time dispatch picks for
+//! this CPU (`lanes.rs`). It counts, per model:
 //!
 //! * **NaN**, **inf**, **neg**: results (a value's channel, a density, a sample's direction,
 //!   value or pdf) that are NaN, infinite, or negative;
@@ -72,6 +72,8 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Instant;
 
 mod lanes;
+// Shared with tests/batch.rs, which uses all of it.
+#[allow(dead_code)]
 #[path = "../../tests/common/soa.rs"]
 mod soa;
 use lanes::Scalar;

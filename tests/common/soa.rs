@@ -2,6 +2,7 @@
 //! and bit-for-bit equality: shared by `tests/batch.rs` and the fuzz example
 //! (`examples/fuzz/`, which includes this file by its path).
 
+use core::ops::Range;
 use lobe::batch::{Lanes, Vec3s, Vec3sMut};
 use lobe::{Spectrum, Vec3};
 
@@ -42,6 +43,22 @@ impl Soa {
             z: &mut self.z,
         }
     }
+    /// Lanes `r`.
+    pub fn range(&self, r: Range<usize>) -> Vec3s<'_> {
+        Vec3s {
+            x: &self.x[r.clone()],
+            y: &self.y[r.clone()],
+            z: &self.z[r],
+        }
+    }
+    /// Lanes `r`, to write.
+    pub fn range_mut(&mut self, r: Range<usize>) -> Vec3sMut<'_> {
+        Vec3sMut {
+            x: &mut self.x[r.clone()],
+            y: &mut self.y[r.clone()],
+            z: &mut self.z[r],
+        }
+    }
     pub fn get(&self, k: usize) -> Vec3 {
         Vec3::new(self.x[k], self.y[k], self.z[k])
     }
@@ -58,6 +75,8 @@ pub trait Buffers: Lanes + Spectrum {
     /// `n` lanes of [`UNWRITTEN`].
     fn store(n: usize) -> Self::Store;
     fn lanes_mut(s: &mut Self::Store) -> Self::Mut<'_>;
+    /// Lanes `r` of the buffers.
+    fn lanes_range(s: &mut Self::Store, r: Range<usize>) -> Self::Mut<'_>;
     fn read(s: &Self::Store, k: usize) -> Self;
 }
 
@@ -68,6 +87,9 @@ impl Buffers for f32 {
     }
     fn lanes_mut(s: &mut Vec<f32>) -> &mut [f32] {
         s
+    }
+    fn lanes_range(s: &mut Vec<f32>, r: Range<usize>) -> &mut [f32] {
+        &mut s[r]
     }
     fn read(s: &Vec<f32>, k: usize) -> f32 {
         s[k]
@@ -81,6 +103,9 @@ impl Buffers for Vec3 {
     }
     fn lanes_mut(s: &mut Soa) -> Vec3sMut<'_> {
         s.view_mut()
+    }
+    fn lanes_range(s: &mut Soa, r: Range<usize>) -> Vec3sMut<'_> {
+        s.range_mut(r)
     }
     fn read(s: &Soa, k: usize) -> Vec3 {
         s.get(k)
