@@ -133,8 +133,10 @@ fn compare_lanes<M: Checked>(
     let mut pdf = vec![UNWRITTEN; n];
     m.pdf_batch(wo.view(), wi.view(), &mut pdf).unwrap();
     let (mut swi, mut sf, mut spdf) = (Soa::unwritten(n), S::<M>::store(n), vec![UNWRITTEN; n]);
-    // Filled with values no lane writes, so that a lane the loop skipped shows.
-    let (mut slobe, mut seta) = (vec![Lobes::SPECULAR_TRANSMISSION; n], vec![-1.0; n]);
+    // Filled with values no lane writes (no sample comes from reflection and transmission at
+    // once), so that a lane the loop skipped shows.
+    let never = Lobes::REFLECTION | Lobes::TRANSMISSION | Lobes::SPECULAR;
+    let (mut slobe, mut seta) = (vec![never; n], vec![-1.0; n]);
     m.sample_batch(
         wo.view(),
         u,

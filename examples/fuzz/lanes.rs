@@ -15,24 +15,30 @@ use lobe::batch::{Batch, SampleOut, Vec2s};
 use lobe::bxdf::{BxdfSample, Lobes};
 use lobe::{Spectrum, Vec3};
 
-/// The scalar calls' answers for one input: `eval`, `pdf` and `sample`.
+/// The scalar calls' answers for one input.
 pub struct Scalar<S> {
+    /// `eval`'s.
     pub f: S,
+    /// `pdf`'s.
     pub pdf: f32,
+    /// `sample`'s.
     pub sample: Option<BxdfSample<S>>,
 }
 
 /// The lengths of the batched calls that [`check`] cuts its inputs into, in turn (what is left
 /// after the last is one more call): around the vector widths (8 and 16 lanes), the longest
-/// call that takes short buffers (64) and the chunks of 256 lanes, so that every form of the
-/// loops (short buffers, chunked passes, the lanes after the last full vector or chunk) meets
-/// the adversarial lanes.
+/// call that takes short buffers (64), the chunks of 256 lanes (the tables' passes, `Mix`'s,
+/// `TwoSided`'s and `Mono`'s values) and of 1,024 (`Mix`'s densities, `TwoSided`'s and
+/// `Mono`'s `z`), so that every form of the loops (short buffers, chunked passes, the lanes
+/// after the last full vector or chunk) meets the adversarial lanes. A batch shorter than
+/// their sum stops early: the corner grid's 2,268 inputs end with a call of 658 lanes after
+/// the one of 511.
 const CALLS: [usize; 19] = [
     1, 2, 7, 8, 9, 15, 16, 17, 31, 33, 63, 64, 65, 255, 256, 257, 511, 1024, 1025,
 ];
 
 /// The lanes of each batched call over `n` inputs: [`CALLS`], then the rest.
-fn calls(n: usize) -> impl Iterator<Item = Range<usize>> {
+pub fn calls(n: usize) -> impl Iterator<Item = Range<usize>> {
     let lengths = CALLS.into_iter().chain(core::iter::repeat(n));
     lengths
         .scan(0, move |start, len| {
@@ -44,9 +50,19 @@ fn calls(n: usize) -> impl Iterator<Item = Range<usize>> {
 }
 
 /// Runs `inputs` through `m`'s batched `eval`, `pdf` and `sample`, in calls of the lengths
-/// [`CALLS`], and counts a [`Kind::Batched`] failure for every lane and call whose answer
-/// differs from `want`'s.
+/// [`CALLS`] ([`check_call`]).
 pub fn check<M>(m: &M, inputs: &[Input], want: &[Scalar<M::Spectrum>], t: &mut Tally)
+where
+    M: Batch<Spectrum: Buffers>,
+{
+    for r in calls(inputs.len()) {
+        check_call(m, &inputs[r.clone()], &want[r], t);
+    }
+}
+
+/// Runs `inputs` through `m`'s batched `eval`, `pdf` and `sample`, one call each, and counts a
+/// [`Kind::Batched`] failure for every lane and call whose answer differs from `want`'s.
+pub fn check_call<M>(m: &M, inputs: &[Input], want: &[Scalar<M::Spectrum>], t: &mut Tally)
 where
     M: Batch<Spectrum: Buffers>,
 {
@@ -60,27 +76,23 @@ where
     let mut pdf = vec![UNWRITTEN; n];
     let (mut s_wi, mut s_f, mut s_pdf) =
         (Soa::unwritten(n), M::Spectrum::store(n), vec![UNWRITTEN; n]);
-    // Values no lane writes, so that a lane the loop skipped shows.
-    let (mut s_lobe, mut s_eta) = (vec![Lobes::SPECULAR_TRANSMISSION; n], vec![-1.0; n]);
+    // Values no lane writes (no sample comes from reflection and transmission at once), so
+    // that a lane the loop skipped shows.
+    let never = Lobes::REFLECTION | Lobes::TRANSMISSION | Lobes::SPECULAR;
+    let (mut s_lobe, mut s_eta) = (vec![never; n], vec![-1.0; n]);
     let lengths = "the inputs' and outputs' slices have one length";
-    for r in calls(n) {
-        let (o, i) = (wo.range(r.clone()), wi.range(r.clone()));
-        m.eval_batch(o, i, M::Spectrum::lanes_range(&mut f, r.clone()))
-            .expect(lengths);
-        m.pdf_batch(o, i, &mut pdf[r.clone()]).expect(lengths);
-        let out = SampleOut {
-            wi: s_wi.range_mut(r.clone()),
-            f: M::Spectrum::lanes_range(&mut s_f, r.clone()),
-            pdf: &mut s_pdf[r.clone()],
-            lobe: &mut s_lobe[r.clone()],
-            eta: &mut s_eta[r.clone()],
-        };
-        let u = Vec2s {
-            x: &ux[r.clone()],
-            y: &uy[r.clone()],
-        };
-        m.sample_batch(o, u, &uc[r], out).expect(lengths);
-    }
+    m.eval_batch(wo.view(), wi.view(), M::Spectrum::lanes_mut(&mut f))
+        .expect(lengths);
+    m.pdf_batch(wo.view(), wi.view(), &mut pdf).expect(lengths);
+    let out = SampleOut {
+        wi: s_wi.view_mut(),
+        f: M::Spectrum::lanes_mut(&mut s_f),
+        pdf: &mut s_pdf,
+        lobe: &mut s_lobe,
+        eta: &mut s_eta,
+    };
+    m.sample_batch(wo.view(), Vec2s { x: &ux, y: &uy }, &uc, out)
+        .expect(lengths);
 
     for (k, (x, w)) in inputs.iter().zip(want).enumerate() {
         let got = M::Spectrum::read(&f, k);

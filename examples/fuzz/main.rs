@@ -20,10 +20,10 @@
 //! refraction pair through the macro-surface (for the dielectrics), a slightly perturbed
 //! mirror pair; directions of length `1 ± 1e-6`; `u` and `uc` at `0`, `1 − 2⁻²⁴`, `1` and
 //! random. For each input it calls `eval`, `pdf`, `sample`, `prepare`, `eval_prepared`,
-//! `pdf_prepared`, `eval_pdf_prepared` and `sample_prepared`; then it passes each batch of
-//! 4,096 inputs (the corner grid: one batch) to `eval_batch`, `pdf_batch` and `sample_batch`,
-//! cut into calls of 1 to 1,025 lanes, on the instruction set the run-time dispatch picks for
-//! this CPU (`lanes.rs`). It counts, per model:
+//! `pdf_prepared`, `eval_pdf_prepared` and `sample_prepared`; then it passes each batch of up
+//! to 4,096 inputs (the corner grid: one batch) to `eval_batch`, `pdf_batch` and
+//! `sample_batch`, cut into calls of 1 to 1,025 lanes, on the instruction set the run-time
+//! dispatch picks for this CPU (`lanes.rs`). It counts, per model:
 //!
 //! * **NaN**, **inf**, **neg**: results (a value's channel, a density, a sample's direction,
 //!   value or pdf) that are NaN, infinite, or negative;
@@ -39,7 +39,7 @@
 //!   every output zero and the lobe `Lobes::NONE`), one count per lane and call;
 //! * **panics**: inputs whose calls panicked (each batch of calls runs under
 //!   `catch_unwind`; a batch that panicked is replayed input by input to find them, a batched
-//!   call one lane a call).
+//!   call one lane a call, and counted once at its first input if no lane panics alone).
 //!
 //! It prints the table (with, per model, how many of the bad results came from inputs with a
 //! random number equal to 1, outside the documented `[0, 1)`), then, when a count is not zero,
@@ -72,8 +72,7 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Instant;
 
 mod lanes;
-// Shared with tests/batch.rs, which uses all of it.
-#[allow(dead_code)]
+// Shared with tests/batch.rs.
 #[path = "../../tests/common/soa.rs"]
 mod soa;
 use lanes::Scalar;
@@ -422,11 +421,6 @@ impl Tally {
     }
 }
 
-/// Bit-for-bit equality, channel by channel.
-fn same_bits<S: Spectrum>(a: S, b: S) -> bool {
-    (0..S::CHANNELS).all(|c| a.channel(c).to_bits() == b.channel(c).to_bits())
-}
-
 /// Every scalar call on one input; returns `eval`'s, `pdf`'s and `sample`'s answers.
 fn check_input<M: Prepare>(m: &M, x: &Input, t: &mut Tally) -> Scalar<M::Spectrum> {
     t.inputs += 1;
@@ -446,7 +440,7 @@ fn check_input<M: Prepare>(m: &M, x: &Input, t: &mut Tally) -> Scalar<M::Spectru
     let (f2, p2) = m.eval_pdf_prepared(&at, x.wi);
     t.value("eval_pdf_prepared", x, f2);
     t.density("eval_pdf_prepared", x, p2);
-    if !same_bits(f, f2) || p.to_bits() != p2.to_bits() {
+    if !soa::same(f, f2) || p.to_bits() != p2.to_bits() {
         t.fail(
             Kind::Split,
             "eval_pdf_prepared",
@@ -465,9 +459,10 @@ thread_local! {
     static PANIC: RefCell<String> = const { RefCell::new(String::new()) };
 }
 
-/// Runs `inputs` through `m`'s scalar calls, then as one batched call through its batched
-/// ones ([`lanes::check`]); a batch that panics is replayed input by input, so that the
-/// panicking inputs are counted and shown and the others still checked.
+/// Runs `inputs` through `m`'s scalar calls, then through its batched ones
+/// ([`lanes::check`]); a batch that panics is replayed input by input, so that the panicking
+/// inputs are counted and shown and the others still checked (the batched calls then take the
+/// inputs that did not panic).
 fn check_batch<M: Fuzzed>(m: &M, inputs: &[Input], t: &mut Tally) {
     let mut batch = Tally::default();
     let ok = catch_unwind(AssertUnwindSafe(|| {
@@ -482,20 +477,29 @@ fn check_batch<M: Fuzzed>(m: &M, inputs: &[Input], t: &mut Tally) {
         check_lanes(m, inputs, &want, t);
         return;
     }
+    let (mut kept, mut want) = (Vec::new(), Vec::new());
     for x in inputs {
         let mut one = Tally::default();
-        if catch_unwind(AssertUnwindSafe(|| check_input(m, x, &mut one))).is_ok() {
-            t.add(one);
-        } else {
-            t.inputs += 1;
-            let message = PANIC.with(|p| p.borrow().clone());
-            t.fail(Kind::Panic, "one of the calls", x, &message);
+        match catch_unwind(AssertUnwindSafe(|| check_input(m, x, &mut one))) {
+            Ok(w) => {
+                t.add(one);
+                kept.push(*x);
+                want.push(w);
+            }
+            Err(_) => {
+                t.inputs += 1;
+                let message = PANIC.with(|p| p.borrow().clone());
+                t.fail(Kind::Panic, "one of the calls", x, &message);
+            }
         }
     }
+    check_lanes(m, &kept, &want, t);
 }
 
-/// [`lanes::check`] on `inputs`, whose scalar answers are `want`; a batched call that panics
-/// is replayed one lane a call, so that the panicking lanes are counted and shown.
+/// [`lanes::check`] on `inputs`, whose scalar answers are `want`. Where it panics, each of its
+/// calls ([`lanes::calls`]) is replayed on its own, and a call that panics one lane a call, so
+/// that the panicking lanes are counted and shown; a call that panics when none of its lanes
+/// does alone counts once, at its first input.
 fn check_lanes<M: Fuzzed>(m: &M, inputs: &[Input], want: &[Scalar<M::Spectrum>], t: &mut Tally) {
     let mut batch = Tally::default();
     if catch_unwind(AssertUnwindSafe(|| {
@@ -506,14 +510,30 @@ fn check_lanes<M: Fuzzed>(m: &M, inputs: &[Input], want: &[Scalar<M::Spectrum>],
         t.add(batch);
         return;
     }
-    for (k, x) in inputs.iter().enumerate() {
-        let mut one = Tally::default();
-        let lane = |one: &mut Tally| lanes::check(m, &inputs[k..=k], &want[k..=k], one);
-        if catch_unwind(AssertUnwindSafe(|| lane(&mut one))).is_ok() {
-            t.add(one);
-        } else {
-            let message = PANIC.with(|p| p.borrow().clone());
-            t.fail(Kind::Panic, "one of the batched calls", x, &message);
+    for r in lanes::calls(inputs.len()) {
+        let (inputs, want) = (&inputs[r.clone()], &want[r]);
+        let mut call = Tally::default();
+        let whole = |call: &mut Tally| lanes::check_call(m, inputs, want, call);
+        if catch_unwind(AssertUnwindSafe(|| whole(&mut call))).is_ok() {
+            t.add(call);
+            continue;
+        }
+        let message = PANIC.with(|p| p.borrow().clone());
+        let mut found = false;
+        for (k, x) in inputs.iter().enumerate() {
+            let mut one = Tally::default();
+            let lane = |one: &mut Tally| lanes::check_call(m, &inputs[k..=k], &want[k..=k], one);
+            if catch_unwind(AssertUnwindSafe(|| lane(&mut one))).is_ok() {
+                t.add(one);
+            } else {
+                found = true;
+                let message = PANIC.with(|p| p.borrow().clone());
+                t.fail(Kind::Panic, "a batched call of one lane", x, &message);
+            }
+        }
+        if !found {
+            let what = format_args!("{} lanes from this one: {message}", inputs.len());
+            t.fail(Kind::Panic, "a batched call", &inputs[0], &what);
         }
     }
 }

@@ -2,18 +2,21 @@
 //! and bit-for-bit equality: shared by `tests/batch.rs` and the fuzz example
 //! (`examples/fuzz/`, which includes this file by its path).
 
-use core::ops::Range;
 use lobe::batch::{Lanes, Vec3s, Vec3sMut};
 use lobe::{Spectrum, Vec3};
 
 /// One slice per coordinate.
 pub struct Soa {
+    /// The `x` of every lane.
     pub x: Vec<f32>,
+    /// The `y` of every lane.
     pub y: Vec<f32>,
+    /// The `z` of every lane.
     pub z: Vec<f32>,
 }
 
 impl Soa {
+    /// The lanes `v`.
     pub fn of(v: &[Vec3]) -> Self {
         Self {
             x: v.iter().map(|w| w.x).collect(),
@@ -29,6 +32,7 @@ impl Soa {
             z: vec![UNWRITTEN; n],
         }
     }
+    /// The lanes as a batched call's input.
     pub fn view(&self) -> Vec3s<'_> {
         Vec3s {
             x: &self.x,
@@ -36,6 +40,7 @@ impl Soa {
             z: &self.z,
         }
     }
+    /// The lanes as a batched call's output.
     pub fn view_mut(&mut self) -> Vec3sMut<'_> {
         Vec3sMut {
             x: &mut self.x,
@@ -43,22 +48,7 @@ impl Soa {
             z: &mut self.z,
         }
     }
-    /// Lanes `r`.
-    pub fn range(&self, r: Range<usize>) -> Vec3s<'_> {
-        Vec3s {
-            x: &self.x[r.clone()],
-            y: &self.y[r.clone()],
-            z: &self.z[r],
-        }
-    }
-    /// Lanes `r`, to write.
-    pub fn range_mut(&mut self, r: Range<usize>) -> Vec3sMut<'_> {
-        Vec3sMut {
-            x: &mut self.x[r.clone()],
-            y: &mut self.y[r.clone()],
-            z: &mut self.z[r],
-        }
-    }
+    /// Lane `k`.
     pub fn get(&self, k: usize) -> Vec3 {
         Vec3::new(self.x[k], self.y[k], self.z[k])
     }
@@ -71,12 +61,13 @@ pub const UNWRITTEN: f32 = f32::from_bits(0x7fc0_beef);
 
 /// A spectrum's batched output buffers, readable per lane.
 pub trait Buffers: Lanes + Spectrum {
+    /// The buffers: one `Vec` per channel.
     type Store;
     /// `n` lanes of [`UNWRITTEN`].
     fn store(n: usize) -> Self::Store;
+    /// The buffers as a batched call's output.
     fn lanes_mut(s: &mut Self::Store) -> Self::Mut<'_>;
-    /// Lanes `r` of the buffers.
-    fn lanes_range(s: &mut Self::Store, r: Range<usize>) -> Self::Mut<'_>;
+    /// Lane `k`.
     fn read(s: &Self::Store, k: usize) -> Self;
 }
 
@@ -87,9 +78,6 @@ impl Buffers for f32 {
     }
     fn lanes_mut(s: &mut Vec<f32>) -> &mut [f32] {
         s
-    }
-    fn lanes_range(s: &mut Vec<f32>, r: Range<usize>) -> &mut [f32] {
-        &mut s[r]
     }
     fn read(s: &Vec<f32>, k: usize) -> f32 {
         s[k]
@@ -103,9 +91,6 @@ impl Buffers for Vec3 {
     }
     fn lanes_mut(s: &mut Soa) -> Vec3sMut<'_> {
         s.view_mut()
-    }
-    fn lanes_range(s: &mut Soa, r: Range<usize>) -> Vec3sMut<'_> {
-        s.range_mut(r)
     }
     fn read(s: &Soa, k: usize) -> Vec3 {
         s.get(k)
