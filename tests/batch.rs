@@ -16,7 +16,7 @@ use lobe::bxdf::{
 use lobe::fresnel::{Conductor, Dielectric, Schlick};
 use lobe::microfacet::{Beckmann, BlinnPhongNdf, Ggx, Gtr, Masking};
 use lobe::verify::Pcg32;
-use lobe::{Alpha, ComplexIor, Eta, Roughness, Spectrum, Vec2, Vec3};
+use lobe::{Alpha, ComplexIor, Eta, Roughness, Spectrum, Vec2, Vec3, Vec4};
 
 /// Lanes per model: a few thousand, so that the vectorised loop and its remainder both run.
 const N: usize = 4099;
@@ -572,6 +572,68 @@ fn the_combinators_and_layered_models_equal_the_scalar_path() {
         "Sheen, exact Smith",
         &Sheen::new(rgb, 0.05).unwrap().with_exact_smith(),
     );
+}
+
+/// Four-wavelength (`Vec4`) models: a spectrum of four channels through the loops, the
+/// stack space of the models built from others (four rows, the most it holds) and the
+/// compensated models' chunk buffers (their largest, for the compensated plastic's `sample`).
+#[test]
+fn the_four_wavelength_models_equal_the_scalar_path() {
+    use lobe::bxdf::{CoatedDiffuse, DiffuseTransmission, Mix, Mono, Sheen, TwoSided};
+    let rho = Vec4::new(0.8, 0.5, 0.2, 0.65);
+    let glass = Eta::new(1.5).unwrap();
+    let gold = Conductor {
+        ior: lobe::metals::GOLD.spectral(Vec4::new(650.0, 550.0, 450.0, 700.0)),
+    };
+    let lambert = Lambert::new(rho).unwrap();
+    check("Lambert, Vec4", &lambert);
+    check("Oren-Nayar, Vec4", &OrenNayar::new(rho, 0.4).unwrap());
+    check(
+        "EON, Vec4",
+        &EnergyPreservingOrenNayar::new(rho, 0.4).unwrap(),
+    );
+    check(
+        "Disney diffuse, Vec4",
+        &DisneyDiffuse::new(rho, Roughness::new(0.5).unwrap()).unwrap(),
+    );
+    for masking in [
+        Masking::HeightCorrelated,
+        Masking::Separable,
+        Masking::VCavity,
+    ] {
+        check(
+            &format!("GGX gold, Vec4, {masking:?}"),
+            &Microfacet::new(Ggx::isotropic(a(0.3)), masking, gold),
+        );
+    }
+    let schlick = Microfacet::new(
+        Ggx::isotropic(a(0.3)),
+        Masking::HeightCorrelated,
+        Schlick::new(rho).unwrap(),
+    );
+    check("GGX Schlick, Vec4", &schlick);
+    let compensated = Microfacet::new(Ggx::isotropic(a(0.6)), Masking::HeightCorrelated, gold)
+        .with_energy_compensation()
+        .unwrap();
+    let lobes = check("GGX gold compensated, Vec4", &compensated);
+    assert_both_lobes("GGX gold compensated, Vec4", &lobes);
+    let plastic = Plastic::new(rho, Ggx::isotropic(a(0.2)), glass).unwrap();
+    assert_both_lobes("Plastic, Vec4", &check("Plastic, Vec4", &plastic));
+    let coat = Plastic::compensated(rho, Ggx::isotropic(a(0.4)), glass).unwrap();
+    let lobes = check("plastic compensated, Vec4", &coat);
+    assert_both_lobes("plastic compensated, Vec4", &lobes);
+    let mix = Mix::new(lambert, schlick, 0.5).unwrap();
+    assert_both_lobes("Mix(Lambert, GGX Schlick), Vec4", &check("Mix, Vec4", &mix));
+    check("TwoSided(GGX Schlick), Vec4", &TwoSided::new(schlick));
+    let rough = RoughDielectric::new(Ggx::isotropic(a(0.3)), glass);
+    check("Mono(rough glass), Vec4", &Mono::<_, Vec4>::new(rough));
+    check(
+        "DiffuseTransmission, Vec4",
+        &DiffuseTransmission::new(rho * 0.5, rho * 0.4).unwrap(),
+    );
+    check("Sheen, Vec4", &Sheen::new(rho, 0.4).unwrap());
+    let coated = CoatedDiffuse::coated_diffuse(rho, Ggx::isotropic(a(0.3)), glass).unwrap();
+    check_stochastic("CoatedDiffuse, Vec4", &coated);
 }
 
 /// The models built from others (`Mix`, `TwoSided`, `Mono`) pass chunks of lanes to their

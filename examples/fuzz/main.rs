@@ -13,7 +13,8 @@
 //! anisotropic 1e-4 × 10; 1 for the compensated models' tables), relative indices `η` = 1,
 //! 1 ± 1e-4, 1e±3, 1.5, 1/1.5, and complex indices with `κ` up to 1,000 and `η` down to the
 //! smallest normal `f32` (the ends of `ComplexIor`'s range). Four-wavelength (`Vec4`) spectra
-//! are not fuzzed: the models' code is generic over the carrier, and `f32` and RGB run it.
+//! are not fuzzed: the models' code is generic over the carrier, and `f32` and RGB run it
+//! (`tests/batch.rs` compares the `Vec4` models' batched calls with their scalar ones).
 //!
 //! The inputs: cosines `0, ±1e-7, ±1e-20, ±1` and uniform on the sphere; azimuths random or
 //! exactly on an axis; `wi = wo`, `wi = −wo`, the mirror pair `(−wo.x, −wo.y, wo.z)`, the

@@ -2,8 +2,8 @@
 //! and bit-for-bit equality: shared by `tests/batch.rs` and the fuzz example
 //! (`examples/fuzz/`, which includes this file by its path).
 
-use lobe::batch::{Lanes, Vec3s, Vec3sMut};
-use lobe::{Spectrum, Vec3};
+use lobe::batch::{Lanes, Vec3s, Vec3sMut, Vec4sMut};
+use lobe::{Spectrum, Vec3, Vec4};
 
 /// One slice per coordinate.
 pub struct Soa {
@@ -94,6 +94,23 @@ impl Buffers for Vec3 {
     }
     fn read(s: &Soa, k: usize) -> Vec3 {
         s.get(k)
+    }
+}
+
+/// Four channels (four wavelengths), one `Vec` each.
+pub struct Channels4([Vec<f32>; 4]);
+
+impl Buffers for Vec4 {
+    type Store = Channels4;
+    fn store(n: usize) -> Channels4 {
+        Channels4([0; 4].map(|_| vec![UNWRITTEN; n]))
+    }
+    fn lanes_mut(s: &mut Channels4) -> Vec4sMut<'_> {
+        let [x, y, z, w] = &mut s.0;
+        Vec4sMut { x, y, z, w }
+    }
+    fn read(s: &Channels4, k: usize) -> Vec4 {
+        Vec4::from_array(s.0.each_ref().map(|c| c[k]))
     }
 }
 
