@@ -13,8 +13,8 @@
 //! anisotropic 1e-4 × 10; 1 for the compensated models' tables), relative indices `η` = 1,
 //! 1 ± 1e-4, 1e±3, 1.5, 1/1.5, and complex indices with `κ` up to 1,000 and `η` down to the
 //! smallest normal `f32` (the ends of `ComplexIor`'s range). Four-wavelength (`Vec4`) spectra
-//! are not fuzzed: the models' code is generic over the carrier, and `f32` and RGB run it
-//! (`tests/batch.rs` compares the `Vec4` models' batched calls with their scalar ones).
+//! have a row of their own (fifteen configurations: the models' code is generic over the
+//! carrier, and `f32` and RGB run most of it).
 //!
 //! The inputs: cosines `0, ±1e-7, ±1e-20, ±1` and uniform on the sphere; azimuths random or
 //! exactly on an axis; `wi = wo`, `wi = −wo`, the mirror pair `(−wo.x, −wo.y, wo.z)`, the
@@ -64,7 +64,7 @@ use lobe::microfacet::{
     Beckmann, BeckmannMasking, BlinnPhongNdf, Ggx, Gtr, Masking, NormalDistribution,
 };
 use lobe::verify::Pcg32;
-use lobe::{Alpha, ComplexIor, Eta, Roughness, Spectrum, Vec2, Vec3};
+use lobe::{Alpha, ComplexIor, Eta, Roughness, Spectrum, Vec2, Vec3, Vec4};
 use std::cell::RefCell;
 use std::fmt::Write as _;
 use std::panic::{AssertUnwindSafe, catch_unwind};
@@ -1031,7 +1031,65 @@ fn configs() -> Vec<Config> {
     }
     push_compensated(&mut c);
     push_compositions(&mut c);
+    push_four_wavelengths(&mut c);
     c.0
+}
+
+/// A row of four-wavelength (`Vec4`) models: the carrier through the scalar code and the
+/// batched loops (four channels, the most the combinators' stack space holds, and the
+/// compensated models' largest chunk buffers), at the widths' ends.
+fn push_four_wavelengths(c: &mut Configs) {
+    const ROW: &str = "four wavelengths (Vec4)";
+    let rho = Vec4::new(1.0, 0.5, 0.0, 0.25);
+    let gold = Conductor {
+        ior: lobe::metals::GOLD.spectral(Vec4::new(650.0, 550.0, 450.0, 700.0)),
+    };
+    let lambert = Lambert::new(rho).unwrap();
+    c.push(ROW, "Lambert".into(), None, lambert);
+    let sigma = OrenNayar::<Vec4>::SIGMA_MAX;
+    c.push(
+        ROW,
+        "Oren-Nayar σ max".into(),
+        None,
+        OrenNayar::new(rho, sigma).unwrap(),
+    );
+    for (a, masking) in [
+        (1e-4, Masking::HeightCorrelated),
+        (10.0, Masking::HeightCorrelated),
+        (0.3, Masking::Separable),
+        (0.3, Masking::VCavity),
+    ] {
+        let m = Microfacet::new(Ggx::isotropic(alpha(a)), masking, gold);
+        c.push(ROW, format!("GGX α {a:e}, {masking:?}, gold"), None, m);
+    }
+    let schlick = Microfacet::new(
+        Ggx::isotropic(alpha(0.3)),
+        Masking::HeightCorrelated,
+        Schlick::new(rho).unwrap(),
+    );
+    c.push(ROW, "GGX α 0.3, Schlick".into(), None, schlick);
+    for a in [1e-4, 1.0] {
+        let m = Microfacet::new(Ggx::isotropic(alpha(a)), Masking::HeightCorrelated, gold);
+        let m = m.with_energy_compensation().unwrap();
+        c.push(ROW, format!("GGX α {a:e}, gold, compensated"), None, m);
+    }
+    for e in [1.5, 1e3] {
+        let m = Plastic::new(rho, Ggx::isotropic(alpha(0.3)), eta(e)).unwrap();
+        c.push(ROW, format!("Plastic, η {e:e}"), Some(eta(e)), m);
+    }
+    let m = Plastic::compensated(rho, Ggx::isotropic(alpha(1.0)), eta(1.5)).unwrap();
+    c.push(ROW, "Plastic::compensated, α 1".into(), Some(eta(1.5)), m);
+    let mix = Mix::new(lambert, schlick, 0.5).unwrap();
+    c.push(ROW, "Mix(Lambert, GGX Schlick)".into(), None, mix);
+    c.push(
+        ROW,
+        "TwoSided(GGX Schlick)".into(),
+        None,
+        TwoSided::new(schlick),
+    );
+    let rough = RoughDielectric::new(Ggx::isotropic(alpha(0.3)), eta(1.5));
+    let mono = Mono::<_, Vec4>::new(rough);
+    c.push(ROW, "Mono(rough glass η 1.5)".into(), Some(eta(1.5)), mono);
 }
 
 /// The energy-compensated models on their own (the tables' widths run to 1), both

@@ -36,7 +36,7 @@
 //! equal `eval`, `pdf` and `sample` bit for bit where the compiler keeps the operations as
 //! written (it does not contract or reassociate `f32` arithmetic, so that is every lane the
 //! tests have seen; `tests/batch.rs` checks adversarial lanes — grazing, below the horizon,
-//! mirror pairs — against the scalar calls, and the fuzz example, `examples/fuzz/`, the 185 M
+//! mirror pairs — against the scalar calls, and the fuzz example, `examples/fuzz/`, the 187 M
 //! inputs of its configurations).
 //!
 //! **Preconditions are not checked.** The scalar `eval`, `pdf` and `sample` assert unit
