@@ -6,7 +6,7 @@
 
 mod common;
 
-use common::soa::{Buffers, Soa, UNWRITTEN, same};
+use common::soa::{Buffers, Soa, UNWRITTEN, eval_pdf_batched, same, sample_batched};
 use lobe::batch::{Batch, Lanes, LengthError, SampleOut, Vec2s, Vec3s};
 use lobe::bxdf::{
     BlinnPhong, BlinnPhongForm, Bxdf, DisneyDiffuse, EnergyPreservingOrenNayar, Glazed, Lambert,
@@ -123,108 +123,54 @@ fn compare_lanes<M: Checked>(
 ) -> (Vec<Lobes>, usize, usize) {
     type S<M> = <M as Prepare>::Spectrum;
     let i = inputs();
-    let (wo, wi) = (Soa::of(&i.wo[..n]), Soa::of(&i.wi[..n]));
-    let (ux, uy): (Vec<f32>, Vec<f32>) = i.u[..n].iter().map(|u| (u.x, u.y)).unzip();
-    let u = Vec2s { x: &ux, y: &uy };
-
-    let mut f = S::<M>::store(n);
-    m.eval_batch(wo.view(), wi.view(), S::<M>::lanes_mut(&mut f))
-        .unwrap();
-    let mut pdf = vec![UNWRITTEN; n];
-    m.pdf_batch(wo.view(), wi.view(), &mut pdf).unwrap();
-    let (mut swi, mut sf, mut spdf) = (Soa::unwritten(n), S::<M>::store(n), vec![UNWRITTEN; n]);
-    // Filled with values no lane writes (no sample comes from reflection and transmission at
-    // once), so that a lane the loop skipped shows.
-    let never = Lobes::REFLECTION | Lobes::TRANSMISSION | Lobes::SPECULAR;
-    let (mut slobe, mut seta) = (vec![never; n], vec![-1.0; n]);
-    m.sample_batch(
-        wo.view(),
-        u,
-        &i.uc[..n],
-        SampleOut {
-            wi: swi.view_mut(),
-            f: S::<M>::lanes_mut(&mut sf),
-            pdf: &mut spdf,
-            lobe: &mut slobe,
-            eta: &mut seta,
-        },
-    )
-    .unwrap();
+    let (wo, u, uc) = (&i.wo[..n], &i.u[..n], &i.uc[..n]);
+    let values = eval_pdf_batched(m, wo, &i.wi[..n]);
+    let samples = sample_batched(m, wo, u, uc);
     // The batched eval and pdf at the sampled directions.
-    let mut at_f = S::<M>::store(n);
-    m.eval_batch(wo.view(), swi.view(), S::<M>::lanes_mut(&mut at_f))
-        .unwrap();
-    let mut at_pdf = vec![UNWRITTEN; n];
-    m.pdf_batch(wo.view(), swi.view(), &mut at_pdf).unwrap();
-    let mut non_specular = 0;
+    let sampled: Vec<Vec3> = (0..n).map(|k| samples.wi.get(k)).collect();
+    let at = eval_pdf_batched(m, wo, &sampled);
 
+    let mut non_specular = 0;
     let mut checked_samples = 0;
     let mut lobes = Vec::new();
     for k in 0..n {
         let (o, w) = (i.wo[k], i.wi[k]);
-        let want = m.eval(o, w);
+        let (got, want) = (S::<M>::read(&values.f, k), m.eval(o, w));
         assert!(
-            same(S::<M>::read(&f, k), want),
-            "{name}: eval lane {k} (wo {o}, wi {w}): batch {:?} vs scalar {want:?}",
-            S::<M>::read(&f, k)
+            same(got, want),
+            "{name}: eval lane {k} (wo {o}, wi {w}): batch {got:?} vs scalar {want:?}"
         );
-        let want = m.pdf(o, w);
+        let (got, want) = (values.pdf[k], m.pdf(o, w));
         assert!(
-            same(pdf[k], want),
-            "{name}: pdf lane {k}: batch {} vs scalar {want}",
-            pdf[k]
+            same(got, want),
+            "{name}: pdf lane {k}: batch {got} vs scalar {want}"
         );
-        match m.sample(o, i.u[k], i.uc[k]) {
-            Some(s) => {
-                checked_samples += 1;
-                if !lobes.contains(&s.lobe) {
-                    lobes.push(s.lobe);
-                }
-                assert!(
-                    same(swi.get(k), s.wi)
-                        && same(S::<M>::read(&sf, k), s.f)
-                        && same(spdf[k], s.pdf)
-                        && slobe[k] == s.lobe
-                        && same(seta[k], s.eta),
-                    "{name}: sample lane {k} (wo {o}, u {:?}, uc {}): batch ({}, {:?}, {}, {}, {}) vs scalar {s:?}",
-                    i.u[k],
-                    i.uc[k],
-                    swi.get(k),
-                    S::<M>::read(&sf, k),
-                    spdf[k],
-                    slobe[k],
-                    seta[k]
-                );
-                if deterministic && !s.lobe.is_specular() {
-                    non_specular += 1;
-                    assert!(
-                        close(S::<M>::read(&at_f, k), s.f, CONSISTENCY)
-                            && close(at_pdf[k], s.pdf, CONSISTENCY),
-                        "{name}: {} sample lane {k} (wo {o}, wi {}): (f, pdf) = ({:?}, {}), \
-                         eval_batch and pdf_batch there ({:?}, {})",
-                        s.lobe,
-                        s.wi,
-                        s.f,
-                        s.pdf,
-                        S::<M>::read(&at_f, k),
-                        at_pdf[k]
-                    );
-                }
-            }
-            None => assert!(
-                same(spdf[k], 0.0)
-                    && same(swi.get(k), Vec3::ZERO)
-                    && same(S::<M>::read(&sf, k), S::<M>::zero())
-                    && slobe[k] == Lobes::NONE
-                    && same(seta[k], 0.0),
-                "{name}: sample lane {k}: the scalar call has no sample, the batch has \
-                 ({}, {:?}, {}, {}, {})",
-                swi.get(k),
-                S::<M>::read(&sf, k),
-                spdf[k],
-                slobe[k],
-                seta[k]
-            ),
+        let scalar = m.sample(o, i.u[k], i.uc[k]);
+        let lane = samples.lane(k);
+        assert!(
+            lane.agrees(scalar.as_ref()),
+            "{name}: sample lane {k} (wo {o}, u {:?}, uc {}): batch {lane:?} vs scalar {scalar:?}",
+            i.u[k],
+            i.uc[k],
+        );
+        let Some(s) = scalar else { continue };
+        checked_samples += 1;
+        if !lobes.contains(&s.lobe) {
+            lobes.push(s.lobe);
+        }
+        if deterministic && !s.lobe.is_specular() {
+            non_specular += 1;
+            let at_f = S::<M>::read(&at.f, k);
+            assert!(
+                close(at_f, s.f, CONSISTENCY) && close(at.pdf[k], s.pdf, CONSISTENCY),
+                "{name}: {} sample lane {k} (wo {o}, wi {}): (f, pdf) = ({:?}, {}), \
+                 eval_batch and pdf_batch there ({at_f:?}, {})",
+                s.lobe,
+                s.wi,
+                s.f,
+                s.pdf,
+                at.pdf[k]
+            );
         }
     }
     (lobes, checked_samples, non_specular)

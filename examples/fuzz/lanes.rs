@@ -8,12 +8,12 @@
 //! picks for this CPU. A lane without a sample must have every output zero and the lobe
 //! [`Lobes::NONE`](lobe::bxdf::Lobes::NONE), as `SampleOut` documents.
 
-use super::soa::{Buffers, Soa, UNWRITTEN, same};
+use super::soa::{Buffers, eval_pdf_batched, same, sample_batched};
 use super::{Input, Kind, Tally};
 use core::ops::Range;
-use lobe::batch::{Batch, SampleOut, Vec2s};
-use lobe::bxdf::{BxdfSample, Lobes};
-use lobe::{Spectrum, Vec3};
+use lobe::batch::Batch;
+use lobe::bxdf::BxdfSample;
+use lobe::{Vec2, Vec3};
 
 /// The scalar calls' answers for one input.
 pub struct Scalar<S> {
@@ -66,65 +66,26 @@ pub fn check_call<M>(m: &M, inputs: &[Input], want: &[Scalar<M::Spectrum>], t: &
 where
     M: Batch<Spectrum: Buffers>,
 {
-    let n = inputs.len();
-    let wo = Soa::of(&inputs.iter().map(|x| x.wo).collect::<Vec<_>>());
-    let wi = Soa::of(&inputs.iter().map(|x| x.wi).collect::<Vec<_>>());
-    let (ux, uy): (Vec<f32>, Vec<f32>) = inputs.iter().map(|x| (x.u.x, x.u.y)).unzip();
+    let wo: Vec<Vec3> = inputs.iter().map(|x| x.wo).collect();
+    let wi: Vec<Vec3> = inputs.iter().map(|x| x.wi).collect();
+    let u: Vec<Vec2> = inputs.iter().map(|x| x.u).collect();
     let uc: Vec<f32> = inputs.iter().map(|x| x.uc).collect();
-
-    let mut f = M::Spectrum::store(n);
-    let mut pdf = vec![UNWRITTEN; n];
-    let (mut s_wi, mut s_f, mut s_pdf) =
-        (Soa::unwritten(n), M::Spectrum::store(n), vec![UNWRITTEN; n]);
-    // Values no lane writes (no sample comes from reflection and transmission at once), so
-    // that a lane the loop skipped shows.
-    let never = Lobes::REFLECTION | Lobes::TRANSMISSION | Lobes::SPECULAR;
-    let (mut s_lobe, mut s_eta) = (vec![never; n], vec![-1.0; n]);
-    let lengths = "the inputs' and outputs' slices have one length";
-    m.eval_batch(wo.view(), wi.view(), M::Spectrum::lanes_mut(&mut f))
-        .expect(lengths);
-    m.pdf_batch(wo.view(), wi.view(), &mut pdf).expect(lengths);
-    let out = SampleOut {
-        wi: s_wi.view_mut(),
-        f: M::Spectrum::lanes_mut(&mut s_f),
-        pdf: &mut s_pdf,
-        lobe: &mut s_lobe,
-        eta: &mut s_eta,
-    };
-    m.sample_batch(wo.view(), Vec2s { x: &ux, y: &uy }, &uc, out)
-        .expect(lengths);
+    let values = eval_pdf_batched(m, &wo, &wi);
+    let samples = sample_batched(m, &wo, &u, &uc);
 
     for (k, (x, w)) in inputs.iter().zip(want).enumerate() {
-        let got = M::Spectrum::read(&f, k);
+        let got = M::Spectrum::read(&values.f, k);
         if !same(got, w.f) {
             let v = format_args!("{got:?} batched, {:?} scalar", w.f);
             t.fail(Kind::Batched, "eval_batch", x, &v);
         }
-        if !same(pdf[k], w.pdf) {
-            let v = format_args!("{:?} batched, {:?} scalar", pdf[k], w.pdf);
+        if !same(values.pdf[k], w.pdf) {
+            let v = format_args!("{:?} batched, {:?} scalar", values.pdf[k], w.pdf);
             t.fail(Kind::Batched, "pdf_batch", x, &v);
         }
-        let (d, v, p) = (s_wi.get(k), M::Spectrum::read(&s_f, k), s_pdf[k]);
-        let (lobe, eta) = (s_lobe[k], s_eta[k]);
-        let agrees = match &w.sample {
-            Some(s) => {
-                same(d, s.wi)
-                    && same(v, s.f)
-                    && same(p, s.pdf)
-                    && lobe == s.lobe
-                    && same(eta, s.eta)
-            }
-            None => {
-                same(d, Vec3::ZERO)
-                    && same(v, M::Spectrum::zero())
-                    && same(p, 0.0)
-                    && lobe == Lobes::NONE
-                    && same(eta, 0.0)
-            }
-        };
-        if !agrees {
-            let got = format_args!("({d:?}, {v:?}, {p:?}, {lobe}, {eta:?}) batched");
-            let v = format_args!("{got}, {:?} scalar", w.sample);
+        let lane = samples.lane(k);
+        if !lane.agrees(w.sample.as_ref()) {
+            let v = format_args!("{lane:?} batched, {:?} scalar", w.sample);
             t.fail(Kind::Batched, "sample_batch", x, &v);
         }
     }

@@ -1,9 +1,11 @@
 //! Owned structure-of-arrays buffers for the batched calls (`lobe::batch`), readable per lane,
-//! and bit-for-bit equality: shared by `tests/batch.rs` and the fuzz example
-//! (`examples/fuzz/`, which includes this file by its path).
+//! one run of a model's three batched calls into them ([`run_batched`]), and bit-for-bit
+//! equality with the scalar calls: shared by `tests/batch.rs` (which asserts) and the fuzz
+//! example (`examples/fuzz/`, which counts; it includes this file by its path).
 
-use lobe::batch::{Lanes, Vec3s, Vec3sMut, Vec4sMut};
-use lobe::{Spectrum, Vec3, Vec4};
+use lobe::batch::{Batch, Lanes, SampleOut, Vec2s, Vec3s, Vec3sMut, Vec4sMut};
+use lobe::bxdf::{BxdfSample, Lobes};
+use lobe::{Spectrum, Vec2, Vec3, Vec4};
 
 /// One slice per coordinate.
 pub struct Soa {
@@ -118,4 +120,136 @@ impl Buffers for Vec4 {
 /// of the same bits: no lane computes one, and [`UNWRITTEN`] marks a lane not written).
 pub fn same<S: Spectrum>(a: S, b: S) -> bool {
     (0..S::CHANNELS).all(|c| a.channel(c).to_bits() == b.channel(c).to_bits())
+}
+
+/// What the sample's lobe buffer holds before a batched call: no sample comes from reflection
+/// and transmission at once, so a lane the loop skipped shows.
+pub fn lobe_unwritten() -> Lobes {
+    Lobes::REFLECTION | Lobes::TRANSMISSION | Lobes::SPECULAR
+}
+
+/// What the sample's `eta` buffer holds before a batched call: no lane writes a negative one.
+pub const ETA_UNWRITTEN: f32 = -1.0;
+
+/// What a model's batched `eval` and `pdf` wrote, lane by lane.
+pub struct Values<S: Buffers> {
+    /// `eval_batch`'s values.
+    pub f: S::Store,
+    /// `pdf_batch`'s densities.
+    pub pdf: Vec<f32>,
+}
+
+/// Runs `m`'s batched `eval` and `pdf` over the lanes `(wo[k], wi[k])`, one call each, into
+/// buffers that start [`UNWRITTEN`].
+///
+/// Panics if the slices differ in length.
+pub fn eval_pdf_batched<M>(m: &M, wo: &[Vec3], wi: &[Vec3]) -> Values<M::Spectrum>
+where
+    M: Batch<Spectrum: Buffers>,
+{
+    let n = wo.len();
+    let (wo, wi) = (Soa::of(wo), Soa::of(wi));
+    let mut f = M::Spectrum::store(n);
+    let mut pdf = vec![UNWRITTEN; n];
+    let lengths = "the inputs' and outputs' slices have one length";
+    m.eval_batch(wo.view(), wi.view(), M::Spectrum::lanes_mut(&mut f))
+        .expect(lengths);
+    m.pdf_batch(wo.view(), wi.view(), &mut pdf).expect(lengths);
+    Values { f, pdf }
+}
+
+/// What a model's batched `sample` wrote, lane by lane.
+pub struct Samples<S: Buffers> {
+    /// The sampled directions.
+    pub wi: Soa,
+    /// The values.
+    pub f: S::Store,
+    /// The densities.
+    pub pdf: Vec<f32>,
+    /// The lobes.
+    pub lobe: Vec<Lobes>,
+    /// The relative indices of refraction.
+    pub eta: Vec<f32>,
+}
+
+/// One lane of [`Samples`].
+#[derive(Debug)]
+pub struct SampleLane<S> {
+    /// The sampled direction.
+    pub wi: Vec3,
+    /// The value.
+    pub f: S,
+    /// The density.
+    pub pdf: f32,
+    /// The lobe.
+    pub lobe: Lobes,
+    /// The relative index of refraction.
+    pub eta: f32,
+}
+
+impl<S: Buffers> Samples<S> {
+    /// Lane `k`.
+    pub fn lane(&self, k: usize) -> SampleLane<S> {
+        SampleLane {
+            wi: self.wi.get(k),
+            f: S::read(&self.f, k),
+            pdf: self.pdf[k],
+            lobe: self.lobe[k],
+            eta: self.eta[k],
+        }
+    }
+}
+
+impl<S: Spectrum> SampleLane<S> {
+    /// The scalar call's answer `scalar`, bit for bit; where it has no sample, every output
+    /// zero and the lobe [`Lobes::NONE`], as `SampleOut` documents.
+    pub fn agrees(&self, scalar: Option<&BxdfSample<S>>) -> bool {
+        match scalar {
+            Some(s) => {
+                same(self.wi, s.wi)
+                    && same(self.f, s.f)
+                    && same(self.pdf, s.pdf)
+                    && self.lobe == s.lobe
+                    && same(self.eta, s.eta)
+            }
+            None => {
+                same(self.wi, Vec3::ZERO)
+                    && same(self.f, S::zero())
+                    && same(self.pdf, 0.0)
+                    && self.lobe == Lobes::NONE
+                    && same(self.eta, 0.0)
+            }
+        }
+    }
+}
+
+/// Runs `m`'s batched `sample` over the lanes `(wo[k], u[k], uc[k])`, one call, into buffers
+/// that start with values no lane writes ([`UNWRITTEN`], [`lobe_unwritten`],
+/// [`ETA_UNWRITTEN`]).
+///
+/// Panics if the slices differ in length.
+pub fn sample_batched<M>(m: &M, wo: &[Vec3], u: &[Vec2], uc: &[f32]) -> Samples<M::Spectrum>
+where
+    M: Batch<Spectrum: Buffers>,
+{
+    let n = wo.len();
+    let wo = Soa::of(wo);
+    let (ux, uy): (Vec<f32>, Vec<f32>) = u.iter().map(|u| (u.x, u.y)).unzip();
+    let mut s = Samples {
+        wi: Soa::unwritten(n),
+        f: M::Spectrum::store(n),
+        pdf: vec![UNWRITTEN; n],
+        lobe: vec![lobe_unwritten(); n],
+        eta: vec![ETA_UNWRITTEN; n],
+    };
+    let out = SampleOut {
+        wi: s.wi.view_mut(),
+        f: M::Spectrum::lanes_mut(&mut s.f),
+        pdf: &mut s.pdf,
+        lobe: &mut s.lobe,
+        eta: &mut s.eta,
+    };
+    m.sample_batch(wo.view(), Vec2s { x: &ux, y: &uy }, uc, out)
+        .expect("the inputs' and outputs' slices have one length");
+    s
 }
