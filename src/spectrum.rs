@@ -47,14 +47,14 @@ pub trait Spectrum:
     fn from_fn(f: impl Fn(usize) -> f32) -> Self;
 
     /// All channels zero.
-    #[inline]
+    #[inline(always)]
     #[must_use]
     fn zero() -> Self {
         Self::splat(0.0)
     }
 
     /// All channels one.
-    #[inline]
+    #[inline(always)]
     #[must_use]
     fn one() -> Self {
         Self::splat(1.0)
@@ -94,12 +94,12 @@ pub trait Spectrum:
 impl Spectrum for f32 {
     const CHANNELS: usize = 1;
 
-    #[inline]
+    #[inline(always)]
     fn splat(v: f32) -> Self {
         v
     }
 
-    #[inline]
+    #[inline(always)]
     fn channel(&self, i: usize) -> f32 {
         assert!(i == 0, "channel {i} of a 1-channel spectrum");
         *self
@@ -124,12 +124,12 @@ impl Spectrum for f32 {
 impl Spectrum for Vec3 {
     const CHANNELS: usize = 3;
 
-    #[inline]
+    #[inline(always)]
     fn splat(v: f32) -> Self {
         Vec3::splat(v)
     }
 
-    #[inline]
+    #[inline(always)]
     fn channel(&self, i: usize) -> f32 {
         self[i]
     }
@@ -153,12 +153,12 @@ impl Spectrum for Vec3 {
 impl Spectrum for Vec4 {
     const CHANNELS: usize = 4;
 
-    #[inline]
+    #[inline(always)]
     fn splat(v: f32) -> Self {
         Vec4::splat(v)
     }
 
-    #[inline]
+    #[inline(always)]
     fn channel(&self, i: usize) -> f32 {
         self[i]
     }
