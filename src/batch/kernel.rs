@@ -1,9 +1,8 @@
 //! The batched loops and their run-time dispatch.
 
-use super::SampleOut;
 use super::lanes::{Lanes, Vec2s, Vec3s};
+use super::{SampleOut, lane_sample};
 use crate::bxdf::{BxdfSample, Lobes, Prepare};
-use crate::spectrum::Spectrum;
 use core::marker::PhantomData;
 use glam::{Vec2, Vec3};
 
@@ -252,10 +251,7 @@ fn sample_lanes<M: Prepare, O: LaneOp<M>>(
     // Counted: a loop over `uc.iter().enumerate()` kept the bounds checks of the other slices,
     // whose exit forced a scalar epilogue of up to 8 lanes (`docs/batched-loops.md`, rule 10).
     for k in 0..n {
-        let (w, v, p, l, e) = match O::sample(m, wo.get(k), u.get(k), uc[k]) {
-            Some(s) => (s.wi, s.f, s.pdf, s.lobe, s.eta),
-            None => (Vec3::ZERO, M::Spectrum::zero(), 0.0, Lobes::NONE, 0.0),
-        };
+        let (w, v, p, l, e) = lane_sample(O::sample(m, wo.get(k), u.get(k), uc[k]));
         (ix[k], iy[k], iz[k]) = (w.x, w.y, w.z);
         M::Spectrum::put(&mut f, k, v);
         pdf[k] = p;

@@ -204,8 +204,10 @@ pub use isa::{InstructionSet, instruction_set};
 pub use lanes::Rows;
 pub use lanes::{Lanes, Vec2s, Vec3s, Vec3sMut, Vec4sMut};
 
-use crate::bxdf::{Lobes, Prepare};
+use crate::bxdf::{BxdfSample, Lobes, Prepare};
+use crate::spectrum::Spectrum;
 use core::fmt;
+use glam::Vec3;
 use kernel::{EvalKernel, Kernel, PdfKernel, Plain, SampleKernel, dispatch};
 
 /// A batched call's slices disagree in length; nothing was written.
@@ -243,7 +245,7 @@ fn same_length(lens: &[usize]) -> Result<usize, LengthError> {
 }
 
 /// Where [`Batch::sample_batch`] writes: every field of the scalar
-/// [`BxdfSample`](crate::bxdf::BxdfSample), one slice per field (per coordinate, per channel).
+/// [`BxdfSample`], one slice per field (per coordinate, per channel).
 ///
 /// As in the scalar sample, a lane whose [`lobe`](Self::lobe) is specular (a delta lobe) has
 /// `f` = the lobe's coefficient over `|cos θi|` and `pdf` = the probability of choosing that
@@ -265,6 +267,17 @@ pub struct SampleOut<'a, S: Lanes> {
     /// The relative indices `η_t/η_i` the paths crossed (`1` for reflection); `0` for a lane
     /// without a sample.
     pub eta: &'a mut [f32],
+}
+
+/// A lane's sample outputs `(wi, f, pdf, lobe, eta)`: the scalar sample's, or for `None` the
+/// zeros [`SampleOut`] documents for a lane without one (`wi`, `f`, `pdf` and `eta` zero, the
+/// lobe [`Lobes::NONE`]). Every loop that writes samples takes them from here.
+#[inline(always)]
+pub(crate) fn lane_sample<S: Spectrum>(s: Option<BxdfSample<S>>) -> (Vec3, S, f32, Lobes, f32) {
+    match s {
+        Some(s) => (s.wi, s.f, s.pdf, s.lobe, s.eta),
+        None => (Vec3::ZERO, S::zero(), 0.0, Lobes::NONE, 0.0),
+    }
 }
 
 /// A model's `eval`, `pdf` and `sample` over batches: see the [module docs](self).

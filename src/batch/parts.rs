@@ -16,7 +16,7 @@
 use super::kernel::Plain;
 use super::lanes::{PART, Rows, SHORT, chunks};
 use super::{Batch, Lanes, LengthError, SampleOut, Vec2s, Vec3s, Vec3sMut};
-use super::{run, same_length, sample_kernel};
+use super::{lane_sample, run, same_length, sample_kernel};
 use crate::bxdf::{BxdfSample, Lobes, Mix, Mono, Prepare, TwoSided};
 use crate::sampling::{picks, reuse_uniform};
 use crate::spectrum::Spectrum;
@@ -161,18 +161,12 @@ impl<const L: usize> Samples<L> {
 /// Writes a sample (or, for `None`, the zeros of a lane without one) to lane `k` of `out`.
 #[inline(always)]
 fn put_sample<S: Lanes>(out: &mut SampleOut<'_, S>, k: usize, s: Option<BxdfSample<S>>) {
-    let s = s.unwrap_or(BxdfSample {
-        wi: Vec3::ZERO,
-        f: S::zero(),
-        pdf: 0.0,
-        lobe: Lobes::NONE,
-        eta: 0.0,
-    });
-    out.wi.put(k, s.wi);
-    S::put(&mut out.f, k, s.f);
-    out.pdf[k] = s.pdf;
-    out.lobe[k] = s.lobe;
-    out.eta[k] = s.eta;
+    let (w, v, p, l, e) = lane_sample(s);
+    out.wi.put(k, w);
+    S::put(&mut out.f, k, v);
+    out.pdf[k] = p;
+    out.lobe[k] = l;
+    out.eta[k] = e;
 }
 
 impl<A, B> Batch for Mix<A, B>

@@ -24,7 +24,7 @@
 use super::kernel::{EvalKernel, Kernel, PdfKernel, SampleKernel};
 use super::lanes::{Lanes, Vec2s, Vec3s, Vec3sMut};
 use super::lanes::{SHORT, chunks};
-use super::{LengthError, SampleOut};
+use super::{LengthError, SampleOut, lane_sample};
 use crate::bxdf::{BxdfSample, Lobes, Prepare};
 use crate::spectrum::Spectrum;
 #[cfg(doc)]
@@ -390,10 +390,7 @@ fn draw_chunk<const L: usize, M: TableSample, O: TableSampleOp<M>>(
     );
     for k in 0..n {
         let at = m.prepare_from(wo.get(k), e_wo[k]);
-        let (w, v, p, l, e) = match O::sample(m, &at, u.get(k), uc[k]) {
-            Some(s) => (s.wi, s.f, s.pdf, s.lobe, s.eta),
-            None => (Vec3::ZERO, M::Spectrum::zero(), 0.0, Lobes::NONE, 0.0),
-        };
+        let (w, v, p, l, e) = lane_sample(O::sample(m, &at, u.get(k), uc[k]));
         (ix[k], iy[k], iz[k]) = (w.x, w.y, w.z);
         (pdf[k], lobe[k], eta[k]) = (p, l, e);
         (f[k], outgoing[k], sampled[k]) = (v, M::outgoing(&at), l != Lobes::NONE);
