@@ -400,27 +400,36 @@ impl<const L: usize> Share<L> {
     }
 }
 
-/// The `z` of a chunk of `wo` seen from above and of `wi` mirrored with it, as [`TwoSided`]
-/// sees them (`wi` may be absent: a sample call's chunk); `x` and `y` stay as they are.
+/// The `z` of a chunk of `wo` seen from above, as [`TwoSided`] sees it (`x` and `y` stay as
+/// they are).
 #[inline(always)]
-fn from_above<const L: usize>(
-    wo_z: &[f32],
-    wi_z: Option<&[f32]>,
-    up: &mut [f32; L],
-    wi_up: &mut [f32; L],
-) {
+fn from_above<const L: usize>(wo_z: &[f32], up: &mut [f32; L]) {
     // Every slice cut to one length, so that the loop has no bounds checks and vectorises.
     let n = wo_z.len();
     let (z, up) = (&wo_z[..n], &mut up[..n]);
     for k in 0..n {
         up[k] = if z[k] < 0.0 { -z[k] } else { z[k] };
     }
-    if let Some(wi_z) = wi_z {
-        let (iz, wi_up) = (&wi_z[..n], &mut wi_up[..n]);
-        for k in 0..n {
-            wi_up[k] = if z[k] < 0.0 { -iz[k] } else { iz[k] };
-        }
+}
+
+/// Lanes `start..end` of `wo` and `wi` as [`TwoSided`] sees them: `wo` from above and `wi`
+/// mirrored with it (their `z` written to `up` and `wi_up`).
+#[inline(always)]
+fn pair_from_above<'a, const L: usize>(
+    (wo, wi): (Vec3s<'a>, Vec3s<'a>),
+    (start, end): (usize, usize),
+    up: &'a mut [f32; L],
+    wi_up: &'a mut [f32; L],
+) -> (Vec3s<'a>, Vec3s<'a>) {
+    let oz = &wo.z[start..end];
+    from_above(oz, up);
+    // Cut to one length, as in `from_above`.
+    let n = oz.len();
+    let (oz, iz, mirrored) = (&oz[..n], &wi.z[start..end][..n], &mut wi_up[..n]);
+    for k in 0..n {
+        mirrored[k] = if oz[k] < 0.0 { -iz[k] } else { iz[k] };
     }
+    (with_z(wo, start, end, up), with_z(wi, start, end, wi_up))
 }
 
 /// Lanes `start..end` of `w`, with the `z` of `z`.
@@ -477,9 +486,7 @@ where
 {
     let (mut up, mut wi_up) = ([0.0; L], [0.0; L]);
     for (start, end) in chunks::<L>(n) {
-        let z = Some(&wi.z[start..end]);
-        from_above(&wo.z[start..end], z, &mut up, &mut wi_up);
-        let (o, i) = (with_z(wo, start, end, &up), with_z(wi, start, end, &wi_up));
+        let (o, i) = pair_from_above((wo, wi), (start, end), &mut up, &mut wi_up);
         let out = B::Spectrum::lanes_of(&mut f, start, end);
         two.inner().eval_batch(o, i, out)?;
     }
@@ -500,9 +507,7 @@ where
 {
     let (mut up, mut wi_up) = ([0.0; L], [0.0; L]);
     for (start, end) in chunks::<L>(n) {
-        let z = Some(&wi.z[start..end]);
-        from_above(&wo.z[start..end], z, &mut up, &mut wi_up);
-        let (o, i) = (with_z(wo, start, end, &up), with_z(wi, start, end, &wi_up));
+        let (o, i) = pair_from_above((wo, wi), (start, end), &mut up, &mut wi_up);
         two.inner().pdf_batch(o, i, &mut pdf[start..end])?;
     }
     Ok(())
@@ -521,10 +526,10 @@ fn two_sided_sample<const L: usize, B: Batch>(
 where
     B::Spectrum: Lanes,
 {
-    let (mut up, mut unused) = ([0.0; L], [0.0; L]);
+    let mut up = [0.0; L];
     for (start, end) in chunks::<L>(n) {
         let oz = &wo.z[start..end];
-        from_above(oz, None, &mut up, &mut unused);
+        from_above(oz, &mut up);
         let (v, c) = (u.range(start, end), &uc[start..end]);
         let part = out_range(&mut out, start, end);
         two.inner()
