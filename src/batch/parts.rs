@@ -400,8 +400,7 @@ impl<const L: usize> Share<L> {
     }
 }
 
-/// The `z` of a chunk of `wo` seen from above, as [`TwoSided`] sees it (`x` and `y` stay as
-/// they are).
+/// The `z` of a chunk of `wo` seen from above, as [`TwoSided`] sees it.
 #[inline(always)]
 fn from_above<const L: usize>(wo_z: &[f32], up: &mut [f32; L]) {
     // Every slice cut to one length, so that the loop has no bounds checks and vectorises.
