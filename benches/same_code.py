@@ -26,7 +26,11 @@ HEADER = re.compile(r"^[0-9a-f]+ <(.*)>:$")
 HASH = re.compile(r"17h[0-9a-f]{16}E|\.llvm\.[0-9]+")
 ADDRESS = re.compile(r"^\s*[0-9a-f]+:")
 TARGET = re.compile(r"<[^>]*>")
+# Addresses and large offsets in the operands: four or more hex digits.
 HEX = re.compile(r"[0-9a-f]{4,}")
+# An instruction's mnemonic (kept as it is, so that `fadd`, spelt in hex letters, stays) and
+# its operands.
+INSTRUCTION = re.compile(r"^(\s*\S*)(.*)$")
 
 
 def functions(binary):
@@ -44,8 +48,8 @@ def functions(binary):
                 found[name].append("\n".join(body))
             name, body = HASH.sub("", header.group(1)), []
         elif name is not None and line.strip():
-            line = HEX.sub("X", TARGET.sub("<>", ADDRESS.sub("", line)))
-            body.append(line)
+            mnemonic, operands = INSTRUCTION.match(ADDRESS.sub("", line)).groups()
+            body.append(mnemonic + HEX.sub("X", TARGET.sub("<>", operands)))
     if name is not None:
         found[name].append("\n".join(body))
     return {k: sorted(v) for k, v in found.items()}

@@ -1,7 +1,7 @@
 //! Owned structure-of-arrays buffers for the batched calls (`lobe::batch`), readable per lane,
 //! runs of a model's batched calls into them ([`eval_pdf_batched`], [`sample_batched`]), and
-//! bit-for-bit equality with the scalar calls: shared by `tests/batch.rs` (which asserts) and the fuzz
-//! example (`examples/fuzz/`, which counts; it includes this file by its path).
+//! bit-for-bit equality with the scalar calls: shared by `tests/batch.rs` (which asserts) and
+//! the fuzz example (`examples/fuzz/`, which counts; it includes this file by its path).
 
 use lobe::batch::{Batch, Lanes, SampleOut, Vec2s, Vec3s, Vec3sMut, Vec4sMut};
 use lobe::bxdf::{BxdfSample, Lobes};
