@@ -14,6 +14,12 @@ instructions. Functions of one name (the instances of a generic function) are co
 set: the linker may lay them out in another order. It prints the functions that differ and
 exits 1 if any do. A function that differs only in register allocation is reported too: read
 the diff (`--show`) before calling a change neutral.
+
+The default (legacy) symbol names leave out a generic function's type parameters, so every
+batched loop is one of the `pulp` dispatcher's instances, and a difference does not say whose.
+Built with `RUSTFLAGS="-C symbol-mangling-version=v0"` (into a target directory of its own) and
+compared with `--demangle`, each instance is named with its types: the model, the spectrum and
+the lane operation. A type renamed by the change then shows as names found in one build only.
 """
 
 import re
@@ -23,9 +29,10 @@ from collections import defaultdict
 from difflib import unified_diff
 
 HEADER = re.compile(r"^[0-9a-f]+ <(.*)>:$")
-HASH = re.compile(r"17h[0-9a-f]{16}E|\.llvm\.[0-9]+")
+HASH = re.compile(r"17h[0-9a-f]{16}E|\.llvm\.[0-9]+|\[[0-9a-f]{16}\]")
 ADDRESS = re.compile(r"^\s*[0-9a-f]+:")
-TARGET = re.compile(r"<[^>]*>")
+# Greedy: a demangled v0 name holds `<` and `>` of its own.
+TARGET = re.compile(r"<.*>")
 # Addresses and large offsets in the operands: four or more hex digits.
 HEX = re.compile(r"[0-9a-f]{4,}")
 # An instruction's mnemonic (kept as it is, so that `fadd`, spelt in hex letters, stays) and
@@ -33,10 +40,10 @@ HEX = re.compile(r"[0-9a-f]{4,}")
 INSTRUCTION = re.compile(r"^(\s*\S*)(.*)$")
 
 
-def functions(binary):
+def functions(binary, demangle):
     """Each function's instructions, masked, by name (a sorted list per name)."""
     out = subprocess.run(
-        ["objdump", "-d", "--no-show-raw-insn", binary],
+        ["objdump", "-d", "--no-show-raw-insn"] + (["-C"] if demangle else []) + [binary],
         capture_output=True, text=True, check=True,
     ).stdout
     found = defaultdict(list)
@@ -56,12 +63,15 @@ def functions(binary):
 
 
 def main():
-    args = [a for a in sys.argv[1:] if a != "--show"]
+    flags = {"--show", "--demangle"}
+    args = [a for a in sys.argv[1:] if a not in flags]
     if len(args) != 2:
-        sys.exit("usage: same_code.py [--show] OLD NEW")
-    old, new = (functions(b) for b in args)
+        sys.exit("usage: same_code.py [--show] [--demangle] OLD NEW")
+    old, new = (functions(b, "--demangle" in sys.argv) for b in args)
     differ = sorted(k for k in old.keys() | new.keys() if old.get(k) != new.get(k))
-    print(f"{len(old)} and {len(new)} function names; {len(differ)} differ")
+    only = (len(old.keys() - new.keys()), len(new.keys() - old.keys()))
+    print(f"{len(old)} and {len(new)} function names ({only[0]} and {only[1]} in one build only);"
+          f" {len(differ)} differ")
     for name in differ:
         print(f"  {name}")
         if "--show" in sys.argv:

@@ -82,67 +82,75 @@ impl<M: Prepare> LaneOp<M> for Plain {
     }
 }
 
-/// `f[k] = eval(wo[k], wi[k])` over the first `n` lanes (every slice has at least `n`).
-pub(crate) struct EvalKernel<'a, 'f, M: Prepare, O>
+/// What a loop over pairs `(wo, wi)` writes per lane: [`Value`]'s spectrum or
+/// [`Density`]'s density.
+pub(crate) trait PairOut<M> {
+    /// The lane's result.
+    type Out: Lanes;
+}
+
+/// The value `eval` gives, each lane's computed by `O`: a [`LaneOp`] here, a table model's
+/// lane operation in the module `tabulated`.
+pub(crate) struct Value<O>(PhantomData<O>);
+
+impl<M: Prepare, O> PairOut<M> for Value<O>
 where
     M::Spectrum: Lanes,
 {
+    type Out = M::Spectrum;
+}
+
+/// The density `pdf` gives, each lane's computed by `O`: a [`LaneOp`] here; `()`, a table
+/// model's own lane form, in the module `tabulated`.
+pub(crate) struct Density<O>(PhantomData<O>);
+
+impl<M, O> PairOut<M> for Density<O> {
+    type Out = f32;
+}
+
+/// `out[k] = eval(wo[k], wi[k])` ([`Value`]) or `pdf(wo[k], wi[k])` ([`Density`]) over the
+/// first `n` lanes (every slice has at least `n`).
+pub(crate) struct PairKernel<'a, 'f, M, P: PairOut<M>> {
     pub(super) m: &'a M,
     pub(super) wo: Vec3s<'a>,
     pub(super) wi: Vec3s<'a>,
-    pub(super) f: <M::Spectrum as Lanes>::Mut<'f>,
+    pub(super) out: <P::Out as Lanes>::Mut<'f>,
     pub(super) n: usize,
-    pub(super) op: PhantomData<O>,
+    pub(super) op: PhantomData<P>,
 }
 
-impl<M: Prepare + Clone, O: LaneOp<M>> Kernel for EvalKernel<'_, '_, M, O>
-where
-    M::Spectrum: Lanes,
-{
+impl<M: Prepare + Clone, P: PairOp<M>> Kernel for PairKernel<'_, '_, M, P> {
     #[inline(always)]
     fn run(self) {
         let (wo, wi, m) = (self.wo, self.wi, self.m.clone());
-        pair_lanes::<M, Value<O>>(&m, self.n, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, self.f);
+        pair_lanes::<M, P>(&m, self.n, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, self.out);
     }
 }
 
-/// What a loop over pairs `(wo, wi)` computes per lane: [`EvalKernel`]'s value or
-/// [`PdfKernel`]'s density.
-trait PairOp<M> {
-    /// The lane's result.
-    type Out: Lanes;
+/// How a [`PairKernel`]'s lane is computed from `wo` and `wi`.
+trait PairOp<M>: PairOut<M> {
     /// The result for `wo` and `wi`.
     fn lane(m: &M, wo: Vec3, wi: Vec3) -> Self::Out;
 }
-
-/// [`LaneOp::eval`] as a [`PairOp`].
-struct Value<O>(PhantomData<O>);
 
 impl<M: Prepare, O: LaneOp<M>> PairOp<M> for Value<O>
 where
     M::Spectrum: Lanes,
 {
-    type Out = M::Spectrum;
-
     #[inline(always)]
     fn lane(m: &M, wo: Vec3, wi: Vec3) -> M::Spectrum {
         O::eval(m, wo, wi)
     }
 }
 
-/// [`LaneOp::pdf`] as a [`PairOp`].
-struct Density<O>(PhantomData<O>);
-
 impl<M: Prepare, O: LaneOp<M>> PairOp<M> for Density<O> {
-    type Out = f32;
-
     #[inline(always)]
     fn lane(m: &M, wo: Vec3, wi: Vec3) -> f32 {
         O::pdf(m, wo, wi)
     }
 }
 
-/// The loop of [`EvalKernel`] and [`PdfKernel`] over the first `n` lanes (every slice has at
+/// [`PairKernel`]'s loop over the first `n` lanes (every slice has at
 /// least `n`), every slice an argument of its own: the compiler then knows that the output
 /// overlaps no input (see [`Kernel`]).
 #[inline(always)]
@@ -163,24 +171,6 @@ fn pair_lanes<M, P: PairOp<M>>(
     let mut out = P::Out::truncate(out, n);
     for k in 0..n {
         P::Out::put(&mut out, k, P::lane(m, wo.get(k), wi.get(k)));
-    }
-}
-
-/// `pdf[k] = pdf(wo[k], wi[k])` over the first `n` lanes.
-pub(crate) struct PdfKernel<'a, 'f, M, O> {
-    pub(super) m: &'a M,
-    pub(super) wo: Vec3s<'a>,
-    pub(super) wi: Vec3s<'a>,
-    pub(super) pdf: &'f mut [f32],
-    pub(super) n: usize,
-    pub(super) op: PhantomData<O>,
-}
-
-impl<M: Prepare + Clone, O: LaneOp<M>> Kernel for PdfKernel<'_, '_, M, O> {
-    #[inline(always)]
-    fn run(self) {
-        let (wo, wi, m) = (self.wo, self.wi, self.m.clone());
-        pair_lanes::<M, Density<O>>(&m, self.n, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, self.pdf);
     }
 }
 

@@ -208,7 +208,7 @@ use crate::bxdf::{BxdfSample, Lobes, Prepare};
 use crate::spectrum::Spectrum;
 use core::fmt;
 use glam::Vec3;
-use kernel::{EvalKernel, Kernel, PdfKernel, Plain, SampleKernel, dispatch};
+use kernel::{Density, Kernel, PairKernel, PairOut, Plain, SampleKernel, Value, dispatch};
 
 /// A batched call's slices disagree in length; nothing was written.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -371,44 +371,46 @@ fn run_here<K: Kernel>(kernel: Result<K, LengthError>) -> Result<(), LengthError
     Ok(())
 }
 
-/// The [`EvalKernel`] of a call, whose slices must have one length.
+/// The `eval` [`PairKernel`] of a call, its lanes computed by `O`.
 #[inline(always)]
 fn eval_kernel<'a, 'f, M: Prepare, O>(
     m: &'a M,
     wo: Vec3s<'a>,
     wi: Vec3s<'a>,
     f: <M::Spectrum as Lanes>::Mut<'f>,
-) -> Result<EvalKernel<'a, 'f, M, O>, LengthError>
+) -> Result<PairKernel<'a, 'f, M, Value<O>>, LengthError>
 where
     M::Spectrum: Lanes,
 {
-    let n = same_length(&[wo.lanes()?, wi.lanes()?, M::Spectrum::lanes(&f)?])?;
-    let op = core::marker::PhantomData;
-    Ok(EvalKernel {
-        m,
-        wo,
-        wi,
-        f,
-        n,
-        op,
-    })
+    pair_kernel(m, wo, wi, f)
 }
 
-/// The [`PdfKernel`] of a call, whose slices must have one length.
+/// The `pdf` [`PairKernel`] of a call, its lanes computed by `O`.
 #[inline(always)]
 fn pdf_kernel<'a, 'f, M, O>(
     m: &'a M,
     wo: Vec3s<'a>,
     wi: Vec3s<'a>,
     pdf: &'f mut [f32],
-) -> Result<PdfKernel<'a, 'f, M, O>, LengthError> {
-    let n = same_length(&[wo.lanes()?, wi.lanes()?, pdf.len()])?;
+) -> Result<PairKernel<'a, 'f, M, Density<O>>, LengthError> {
+    pair_kernel(m, wo, wi, pdf)
+}
+
+/// The [`PairKernel`] of a call, whose slices must have one length.
+#[inline(always)]
+fn pair_kernel<'a, 'f, M, P: PairOut<M>>(
+    m: &'a M,
+    wo: Vec3s<'a>,
+    wi: Vec3s<'a>,
+    out: <P::Out as Lanes>::Mut<'f>,
+) -> Result<PairKernel<'a, 'f, M, P>, LengthError> {
+    let n = same_length(&[wo.lanes()?, wi.lanes()?, P::Out::lanes(&out)?])?;
     let op = core::marker::PhantomData;
-    Ok(PdfKernel {
+    Ok(PairKernel {
         m,
         wo,
         wi,
-        pdf,
+        out,
         n,
         op,
     })

@@ -21,7 +21,7 @@
 //! [`SHORT`] lanes takes buffers of that many lanes (a quarter of the size), so that a short
 //! call does not pay for zeroing a long chunk's.
 
-use super::kernel::{EvalKernel, Kernel, PdfKernel, SampleKernel};
+use super::kernel::{Density, Kernel, PairKernel, PairOut, SampleKernel, Value};
 use super::lanes::{Lanes, Vec2s, Vec3s, Vec3sMut};
 use super::lanes::{SHORT, chunks};
 use super::{LengthError, SampleOut, lane_sample};
@@ -30,7 +30,6 @@ use crate::spectrum::Spectrum;
 #[cfg(doc)]
 use crate::tables::AlbedoRow;
 use crate::tables::CHUNK;
-use core::marker::PhantomData;
 use glam::{Vec2, Vec3};
 
 /// A lane's entry in a chunk's buffer, and what fills the buffer before the lanes do.
@@ -105,7 +104,7 @@ pub(crate) trait TableSampleOp<M: TableSample> {
     fn sample(m: &M, at: &M::Prepared, u: Vec2, uc: f32) -> Option<BxdfSample<M::Spectrum>>;
 }
 
-/// A batched call's kernel ([`EvalKernel`], [`PdfKernel`], [`SampleKernel`]) run a chunk
+/// A batched call's kernel ([`PairKernel`], [`SampleKernel`]) run a chunk
 /// of `L` lanes at a time, for a table model's lane operation.
 pub(crate) struct Chunked<const L: usize, K>(K);
 
@@ -115,17 +114,7 @@ pub(crate) trait Counted {
     fn lanes(&self) -> usize;
 }
 
-impl<M: Prepare, O> Counted for EvalKernel<'_, '_, M, O>
-where
-    M::Spectrum: Lanes,
-{
-    #[inline(always)]
-    fn lanes(&self) -> usize {
-        self.n
-    }
-}
-
-impl<M, O> Counted for PdfKernel<'_, '_, M, O> {
+impl<M, P: PairOut<M>> Counted for PairKernel<'_, '_, M, P> {
     #[inline(always)]
     fn lanes(&self) -> usize {
         self.n
@@ -144,16 +133,16 @@ where
 
 /// `f[k] = eval(wo[k], wi[k])` over the first `n` lanes, a chunk at a time.
 impl<const L: usize, M: TableLanes + Clone, O: TableOp<M>> Kernel
-    for Chunked<L, EvalKernel<'_, '_, M, O>>
+    for Chunked<L, PairKernel<'_, '_, M, Value<O>>>
 where
     M::Spectrum: Lanes,
 {
     #[inline(always)]
     fn run(self) {
-        let EvalKernel {
-            m, wo, wi, f, n, ..
+        let PairKernel {
+            m, wo, wi, out, n, ..
         } = self.0;
-        eval_chunks::<L, M, O>(&m.clone(), wo, wi, f, n);
+        eval_chunks::<L, M, O>(&m.clone(), wo, wi, out, n);
     }
 }
 
@@ -179,24 +168,17 @@ fn eval_chunks<const L: usize, M: TableLanes, O: TableOp<M>>(
     }
 }
 
-/// What [`Chunked`] `eval` and `pdf` compute per lane from the prepared state: a
-/// [`TableOp`]'s value, or [`TableLanes::pdf_lane`]'s density ([`Density`]).
-trait ChunkPair<M: TableLanes> {
-    /// The lane's result.
-    type Out: Lanes;
+/// How [`Chunked`] `eval` and `pdf` compute a lane from the prepared state: a [`TableOp`]'s
+/// value ([`Value`]), or [`TableLanes::pdf_lane`]'s density (`Density<()>`).
+trait ChunkPair<M: TableLanes>: PairOut<M> {
     /// The result at `wi`, whose tables' values are `e_wi`.
     fn lane(m: &M, at: &M::Prepared, wi: Vec3, e_wi: M::Looked) -> Self::Out;
 }
-
-/// A [`TableOp`]'s value.
-struct Value<O>(PhantomData<O>);
 
 impl<M: TableLanes, O: TableOp<M>> ChunkPair<M> for Value<O>
 where
     M::Spectrum: Lanes,
 {
-    type Out = M::Spectrum;
-
     #[inline(always)]
     fn lane(m: &M, at: &M::Prepared, wi: Vec3, e_wi: M::Looked) -> M::Spectrum {
         O::eval(m, at, wi, e_wi)
@@ -204,11 +186,7 @@ where
 }
 
 /// The density of a lane, which reads no table at `wi`.
-struct Density;
-
-impl<M: TableLanes> ChunkPair<M> for Density {
-    type Out = f32;
-
+impl<M: TableLanes> ChunkPair<M> for Density<()> {
     #[inline(always)]
     fn lane(m: &M, at: &M::Prepared, wi: Vec3, _: M::Looked) -> f32 {
         m.pdf_lane(at, wi)
@@ -242,13 +220,15 @@ fn pair_chunk<const L: usize, M: TableLanes, P: ChunkPair<M>>(
 }
 
 /// `pdf[k] = pdf(wo[k], wi[k])` over the first `n` lanes, a chunk at a time.
-impl<const L: usize, M: TableLanes + Clone> Kernel for Chunked<L, PdfKernel<'_, '_, M, ()>> {
+impl<const L: usize, M: TableLanes + Clone> Kernel
+    for Chunked<L, PairKernel<'_, '_, M, Density<()>>>
+{
     #[inline(always)]
     fn run(self) {
-        let PdfKernel {
-            m, wo, wi, pdf, n, ..
+        let PairKernel {
+            m, wo, wi, out, n, ..
         } = self.0;
-        pdf_chunks::<L, M>(&m.clone(), wo, wi, pdf, n);
+        pdf_chunks::<L, M>(&m.clone(), wo, wi, out, n);
     }
 }
 
@@ -267,7 +247,7 @@ fn pdf_chunks<const L: usize, M: TableLanes>(
         m.look_up(o.z, &mut e_wo);
         let pdf = &mut pdf[start..end];
         // `pdf` reads no table at `wi`: `e_wo` stands in for it, unread.
-        pair_chunk::<L, M, Density>(m, o.x, o.y, o.z, &e_wo, i.x, i.y, i.z, &e_wo, pdf);
+        pair_chunk::<L, M, Density<()>>(m, o.x, o.y, o.z, &e_wo, i.x, i.y, i.z, &e_wo, pdf);
     }
 }
 
