@@ -14,12 +14,12 @@ use glam::{Vec2, Vec3};
 /// the compiler sees that no store of the loop changes the model's parameters and that reading
 /// them is always safe: through a reference, a parameter read on only some lanes (after a
 /// lane's early return) is vectorised as a masked gather from one address per iteration. Its
-/// loop takes each slice as an argument of its own (`pair_lanes`, `sample_lanes`): slices
-/// passed so are known not to overlap, while an output read out of a struct is compared with
-/// every input at run time before the vectorised loop, which short batches then skip
-/// (`docs/batched-loops.md`, rule 10; a spectrum's output channels, one `Lanes::Mut` value, are
-/// still compared with each other, and in the `eval` of Oren-Nayar, Disney diffuse and EON with
-/// every input too: rule 10's "Open").
+/// loop takes each slice as an argument of its own (`pair_lanes`, `sample_lanes`) and reads a
+/// lane's inputs from those slices, not through a [`Vec3s`] built from them: slices passed so
+/// are known not to overlap, while an output read out of a struct is compared with every input
+/// at run time before the vectorised loop, which short batches then skip, and inputs read
+/// through a `Vec3s`'s `get` raised the length from which the loop is vectorised from 8 lanes
+/// to 16 or 24 for some models (`docs/batched-loops.md`, rule 10).
 pub(crate) trait Kernel {
     /// The loop.
     fn run(self);
@@ -166,11 +166,13 @@ fn pair_lanes<M, P: PairOp<M>>(
     iz: &[f32],
     out: <P::Out as Lanes>::Mut<'_>,
 ) {
-    let wo = Vec3s::first(ox, oy, oz, n);
-    let wi = Vec3s::first(ix, iy, iz, n);
+    let (ox, oy, oz) = (&ox[..n], &oy[..n], &oz[..n]);
+    let (ix, iy, iz) = (&ix[..n], &iy[..n], &iz[..n]);
     let mut out = P::Out::truncate(out, n);
     for k in 0..n {
-        P::Out::put(&mut out, k, P::lane(m, wo.get(k), wi.get(k)));
+        let wo = Vec3::new(ox[k], oy[k], oz[k]);
+        let wi = Vec3::new(ix[k], iy[k], iz[k]);
+        P::Out::put(&mut out, k, P::lane(m, wo, wi));
     }
 }
 
@@ -233,15 +235,16 @@ fn sample_lanes<M: Prepare, O: LaneOp<M>>(
 ) where
     M::Spectrum: Lanes,
 {
-    let wo = Vec3s::first(ox, oy, oz, n);
-    let (u, uc) = (Vec2s { x: ux, y: uy }.range(0, n), &uc[..n]);
+    let (ox, oy, oz) = (&ox[..n], &oy[..n], &oz[..n]);
+    let (ux, uy, uc) = (&ux[..n], &uy[..n], &uc[..n]);
     let (ix, iy, iz) = (&mut ix[..n], &mut iy[..n], &mut iz[..n]);
     let mut f = M::Spectrum::truncate(f, n);
     let (pdf, lobe, eta) = (&mut pdf[..n], &mut lobe[..n], &mut eta[..n]);
     // Counted: a loop over `uc.iter().enumerate()` kept the bounds checks of the other slices,
     // whose exit forced a scalar epilogue of up to 8 lanes (`docs/batched-loops.md`, rule 10).
     for k in 0..n {
-        let (w, v, p, l, e) = lane_sample(O::sample(m, wo.get(k), u.get(k), uc[k]));
+        let (wo, u) = (Vec3::new(ox[k], oy[k], oz[k]), Vec2::new(ux[k], uy[k]));
+        let (w, v, p, l, e) = lane_sample(O::sample(m, wo, u, uc[k]));
         (ix[k], iy[k], iz[k]) = (w.x, w.y, w.z);
         M::Spectrum::put(&mut f, k, v);
         pdf[k] = p;

@@ -181,7 +181,7 @@ batch_by!(impl<D: NormalDistribution + Clone, F: Fresnel>
 /// returns zero first). The same numbers; what changes is the loop: Plain's early zero left the
 /// loads of `x` and `y`, which only the value reads, behind the test, and LLVM vectorised them
 /// as masked loads, which it prices high under AVX2. Without them the loop vectorises from
-/// fewer lanes a call (rule 10's "Open" in `docs/batched-loops.md`). The scalar calls keep the
+/// fewer lanes a call (rule 10 in `docs/batched-loops.md`). The scalar calls keep the
 /// early zero: below the surface it skips the value's work. A model of the crate's only:
 /// `CosineSampled` promises nothing of `value` below the surface, where this op calls it.
 struct Cosine;
