@@ -29,7 +29,7 @@ from collections import defaultdict
 from difflib import unified_diff
 
 HEADER = re.compile(r"^[0-9a-f]+ <(.*)>:$")
-HASH = re.compile(r"17h[0-9a-f]{16}E|\.llvm\.[0-9]+|\[[0-9a-f]{16}\]")
+HASH = re.compile(r"17h[0-9a-f]{16}E|\.llvm\.[0-9]+|\[[0-9a-f]{1,16}\]")
 ADDRESS = re.compile(r"^\s*[0-9a-f]+:")
 # Greedy: a demangled v0 name holds `<` and `>` of its own.
 TARGET = re.compile(r"<.*>")
@@ -75,6 +75,8 @@ def main():
     for name in differ:
         print(f"  {name}")
         if "--show" in sys.argv:
+            if name not in new or name not in old:
+                print(f"    only in {'OLD' if name in old else 'NEW'}")
             for a, b in zip(old.get(name, []), new.get(name, [])):
                 diff = unified_diff(a.splitlines(), b.splitlines(), lineterm="", n=1)
                 print("\n".join(diff))

@@ -50,8 +50,9 @@
 //! to the loop one to an argument (so that the compiler knows no two overlap, checks at run
 //! time only a spectrum's output channels against each other, and vectorises from 8 lanes on
 //! under AVX2, 16 under AVX-512: a call of 16 lanes runs at 0.2–0.4× of the scalar calls for
-//! the GGX conductor under AVX2, `cargo bench --bench batched -- --lanes 16`, and the diffuse
-//! models' `eval` at 0.3–0.6×, `docs/batched-loops.md`, rule 10; under
+//! the GGX conductor under AVX2, `cargo bench --bench batched -- --lanes 16`, the `eval` of
+//! Oren-Nayar, EON, Disney diffuse and the diffuse transmitter at 0.33–0.62× and `Lambert`'s,
+//! mostly the call's fixed cost, at about 1×, `docs/batched-loops.md`, rule 10; under
 //! AVX2 a call of fewer than 8 lanes fills no vector, and at 4 lanes the calls the README
 //! times run at 1.1–3.9× of the scalar calls: call those), the per-lane code is inlined, its
 //! early returns become selects, and what the loop would
