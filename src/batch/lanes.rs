@@ -42,13 +42,6 @@ impl<'a> Vec3s<'a> {
             z: &self.z[start..end],
         }
     }
-
-    /// The first `n` lanes of the coordinates `x`, `y`, `z` (a batched loop's slices, each
-    /// passed as an argument of its own: `docs/batched-loops.md`, rule 10).
-    #[inline(always)]
-    pub(crate) fn first(x: &'a [f32], y: &'a [f32], z: &'a [f32], n: usize) -> Self {
-        Self { x, y, z }.range(0, n)
-    }
 }
 
 /// Points of the unit square (a sampler's random numbers) as one slice per coordinate.

@@ -47,7 +47,8 @@ type Rows3<const L: usize> = [[f32; L]; 3];
 /// The first `n` lanes of `rows` as a [`Vec3s`].
 #[inline(always)]
 fn view<const L: usize>(rows: &Rows3<L>, n: usize) -> Vec3s<'_> {
-    Vec3s::first(&rows[0], &rows[1], &rows[2], n)
+    let [x, y, z] = rows;
+    Vec3s { x, y, z }.range(0, n)
 }
 
 /// The first `n` lanes of `rows` as a [`Vec3sMut`].

@@ -210,12 +210,14 @@ fn pair_chunk<const L: usize, M: TableLanes, P: ChunkPair<M>>(
     out: <P::Out as Lanes>::Mut<'_>,
 ) {
     let n = ox.len().min(L);
-    let (wo, wi) = (Vec3s::first(ox, oy, oz, n), Vec3s::first(ix, iy, iz, n));
+    let (ox, oy, oz) = (&ox[..n], &oy[..n], &oz[..n]);
+    let (ix, iy, iz) = (&ix[..n], &iy[..n], &iz[..n]);
     let (e_wo, e_wi) = (&e_wo[..n], &e_wi[..n]);
     let mut out = P::Out::truncate(out, n);
     for k in 0..n {
-        let at = m.prepare_from(wo.get(k), e_wo[k]);
-        P::Out::put(&mut out, k, P::lane(m, &at, wi.get(k), e_wi[k]));
+        let at = m.prepare_from(Vec3::new(ox[k], oy[k], oz[k]), e_wo[k]);
+        let wi = Vec3::new(ix[k], iy[k], iz[k]);
+        P::Out::put(&mut out, k, P::lane(m, &at, wi, e_wi[k]));
     }
 }
 
@@ -356,11 +358,8 @@ fn draw_chunk<const L: usize, M: TableSample, O: TableSampleOp<M>>(
     drawn: &mut Drawn<L, M>,
 ) {
     let n = ox.len().min(L);
-    let (wo, u, uc) = (
-        Vec3s::first(ox, oy, oz, n),
-        Vec2s { x: ux, y: uy }.range(0, n),
-        &uc[..n],
-    );
+    let (ox, oy, oz) = (&ox[..n], &oy[..n], &oz[..n]);
+    let (ux, uy, uc) = (&ux[..n], &uy[..n], &uc[..n]);
     let (ix, iy, iz) = (&mut ix[..n], &mut iy[..n], &mut iz[..n]);
     let (pdf, lobe, eta, e_wo) = (&mut pdf[..n], &mut lobe[..n], &mut eta[..n], &e_wo[..n]);
     let (f, outgoing, sampled) = (
@@ -369,8 +368,9 @@ fn draw_chunk<const L: usize, M: TableSample, O: TableSampleOp<M>>(
         &mut drawn.sampled[..n],
     );
     for k in 0..n {
-        let at = m.prepare_from(wo.get(k), e_wo[k]);
-        let (w, v, p, l, e) = lane_sample(O::sample(m, &at, u.get(k), uc[k]));
+        let at = m.prepare_from(Vec3::new(ox[k], oy[k], oz[k]), e_wo[k]);
+        let u = Vec2::new(ux[k], uy[k]);
+        let (w, v, p, l, e) = lane_sample(O::sample(m, &at, u, uc[k]));
         (ix[k], iy[k], iz[k]) = (w.x, w.y, w.z);
         (pdf[k], lobe[k], eta[k]) = (p, l, e);
         (f[k], outgoing[k], sampled[k]) = (v, M::outgoing(&at), l != Lobes::NONE);
