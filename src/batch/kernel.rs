@@ -20,7 +20,8 @@ use glam::{Vec2, Vec3};
 /// at run time before the vectorised loop, which short batches then skip, and inputs read
 /// through a `Vec3s`'s `get` raised the length from which the loop is vectorised from 8 lanes
 /// to 16 or 24 for some models (`docs/batched-loops.md`, rule 10). The table models' chunked
-/// loops in the module `tabulated` (`pair_chunk`, `draw_chunk`) read their slices the same way.
+/// loops in the module `tabulated` (`pair_chunk`, `draw_chunk`) index their slice arguments
+/// the same way.
 pub(crate) trait Kernel {
     /// The loop.
     fn run(self);

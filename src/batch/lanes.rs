@@ -16,7 +16,7 @@ pub struct Vec3s<'a> {
     pub z: &'a [f32],
 }
 
-impl<'a> Vec3s<'a> {
+impl Vec3s<'_> {
     /// The number of lanes.
     ///
     /// # Errors

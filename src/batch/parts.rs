@@ -48,7 +48,11 @@ type Rows3<const L: usize> = [[f32; L]; 3];
 #[inline(always)]
 fn view<const L: usize>(rows: &Rows3<L>, n: usize) -> Vec3s<'_> {
     let [x, y, z] = rows;
-    Vec3s { x, y, z }.range(0, n)
+    Vec3s {
+        x: &x[..n],
+        y: &y[..n],
+        z: &z[..n],
+    }
 }
 
 /// The first `n` lanes of `rows` as a [`Vec3sMut`].
