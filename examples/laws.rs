@@ -357,9 +357,10 @@ fn main() -> Result<(), ParamError> {
         "Positivity: violations over 20 000 adversarial pairs. Reciprocity: max relative error \
          (generalised form across an interface). Energy bound: max directional albedo ± its \
          standard error over θo ∈ {{0°, 30°, 60°, 80°, 89°}}, checked against 1. Estimators: \
-         the largest gap between the sampler's and cosine sampling's albedo, in standard \
-         errors (for a model with delta lobes, of its lobes with a density). Sampling: the smallest chi-square p-value. Consistency: max relative \
-         difference of `sample` from `eval`/`pdf`. For a stochastic model (a layered BSDF) \
+         the largest gap between the sampler's and cosine sampling's albedo, ± its standard \
+         error (for a model with delta lobes, of its lobes with a density). Sampling: the \
+         smallest chi-square p-value. Consistency: max relative difference of `sample` from \
+         `eval`/`pdf`. For a stochastic model (a layered BSDF) \
          three columns are checked in expectation: reciprocity is the largest gap between \
          the means of 64 independent estimates of each side, in standard errors; sampling \
          is the chi-square p-value against the expected density (1024 pdf estimates per \

@@ -1,4 +1,4 @@
-//! Polar plots of every model's lobe: `f(wo, wi) · |cos θi|` in the plane of incidence.
+//! Polar plots of the models' lobes: `f(wo, wi) · |cos θi|` in the plane of incidence.
 //!
 //! For each model and a few roughness or exponent settings, one panel draws the scattered
 //! distribution for the viewer at θo = 0°, 30°, 60° and 80° (one colour each; a dashed ray
@@ -9,7 +9,9 @@
 //! Delta lobes have no density and are not drawn: `Glazed` shows its diffuse part only. On
 //! the rough dielectric's common scale the reflection (about 4% of the light at η = 1.5) is
 //! small beside the transmission, which refraction also concentrates.
-//! This is the handout's "Phong model—plots" figure, for every model of the crate.
+//! This is the handout's "Phong model—plots" figure, for ten models of the crate (the GTR and
+//! Blinn-Phong-distribution conductors, the sheen, the diffuse transmitter and the composites
+//! are not drawn).
 //!
 //! ```text
 //! cargo run --release --example lobes
