@@ -352,11 +352,16 @@ fn main() -> Result<(), ParamError> {
         Law::Sampling,
         Law::Consistency,
     ];
+    println!(
+        "Written by `cargo run --release --example laws` (which `.ci/figures` runs); not to be \
+         edited by hand.\n"
+    );
     println!("### BSDF models\n");
     println!(
         "Positivity: violations over 20 000 adversarial pairs. Reciprocity: max relative error \
          (generalised form across an interface). Energy bound: max directional albedo ± its \
-         standard error over θo ∈ {{0°, 30°, 60°, 80°, 89°}}, checked against 1. Estimators: \
+         standard error over θo ∈ {{0°, 30°, 60°, 80°, 89°}} (and the same five below the \
+         surface for a transmissive model), checked against 1. Estimators: \
          the largest gap between the sampler's and cosine sampling's albedo, ± its standard \
          error (for a model with delta lobes, of its lobes with a density). Sampling: the \
          smallest chi-square p-value. Consistency: max relative difference of `sample` from \
