@@ -7,7 +7,7 @@
 // `C(x) = cos θ · erfc(−x)/2 + sin θ · e^(−x²)/(2√π)` on `x < cot θ` (Heitz & d'Eon 2014,
 // supplemental).
 
-/// The sampler's bracket: slopes below −6 carry less than 1e-17 of the mass.
+/// The sampler's bracket: slopes below −6 carry less than 3e-16 of the mass.
 pub const LIMIT: f64 = 6.0;
 
 /// `erfc(x)` to about 1e-14: the Maclaurin series of `erf` for `|x| < 2.5`, Lentz's continued

@@ -50,7 +50,7 @@ impl Frame {
 
     /// A frame around the unit normal `n` whose `x` follows the tangent `t` (for example
     /// `∂p/∂u`, which orients an anisotropic lobe), made orthogonal to `n` by Gram-Schmidt
-    /// (twice, so the frame is orthonormal to a few ε even for `t` within 1e-6 rad of `n`).
+    /// (twice, so the frame is orthonormal to a few ε for `t` down to about 1e-6 rad from `n`).
     ///
     /// When `t` is (nearly) parallel to `n`, or not finite, falls back to
     /// [`Frame::from_normal`]. Precondition: `n` has unit length; `t` need not.

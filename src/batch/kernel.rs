@@ -41,11 +41,11 @@ impl<K: Kernel> pulp::WithSimd for Pulp<K> {
     }
 }
 
-/// Runs `kernel` compiled for the widest instruction set the CPU and the operating system
-/// have, on x86 with `std` (pulp asks std's `is_x86_feature_detected!` once and caches the
-/// answer); otherwise compiled for the target: on other architectures, and on x86 without
-/// `std`, where pulp would read CPUID alone and could pick AVX that the OS has not enabled
-/// (the [module docs](super) say more).
+/// Runs `kernel` compiled for the widest instruction set the CPU and the operating system have, on
+/// x86 with `std` (pulp asks std's `is_x86_feature_detected!`, which detects once and caches the
+/// answer); otherwise compiled for the target: on other architectures, and on x86 without `std`,
+/// where pulp would read CPUID alone and could pick AVX that the OS has not enabled (the [module
+/// docs](super) say more).
 #[inline(always)]
 pub(crate) fn dispatch<K: Kernel>(kernel: K) {
     #[cfg(all(feature = "std", any(target_arch = "x86", target_arch = "x86_64")))]

@@ -282,16 +282,17 @@ pub(crate) fn lane_sample<S: Spectrum>(s: Option<BxdfSample<S>>) -> (Vec3, S, f3
 
 /// A model's `eval`, `pdf` and `sample` over batches: see the [module docs](self).
 ///
-/// Every model of the crate implements it; a model of your own that implements
-/// [`Prepare`] and `Clone` gets it from `impl Batch for MyModel {}`. A batched call clones
-/// the model once, for its loop (see the [module docs](self)); a model is a handful of
-/// numbers and, at most, a table of them, so that costs nothing per lane. (A model that owns
-/// heap data, a measured BRDF in a `Vec`, would allocate on every batched call: hold such
-/// data by reference or in an `Arc`.) Two consequences of the bound: `Batch` is not object
-/// safe (there is no `dyn Batch`: a renderer with materials chosen at run time matches on
-/// its own enum once per batch), and a model with interior mutability (a cache in a `Cell`)
-/// sees a batched call's writes on the clone, not on itself. The generic models need their
-/// parts to be `Clone`: a [`NormalDistribution`](crate::microfacet::NormalDistribution) or
+/// Every model of the crate implements it; a model of your own that implements [`Prepare`] and
+/// `Clone`, with a spectrum that implements [`Lanes`], gets it from `impl Batch for MyModel {}`. A
+/// batched call clones the model once, for its loop (see the [module docs](self); a combinator's
+/// parts, once per chunk of 256 or 1,024 lanes); a model is a handful of numbers and, at most, a
+/// table of them, so that costs nothing per lane. (A model that owns heap data, a measured BRDF in
+/// a `Vec`, would allocate on every batched call: hold such data by reference or in an `Arc`.) Two
+/// consequences of the bound: `Batch` is not object safe (there is no `dyn Batch`: a renderer with
+/// materials chosen at run time matches on its own enum once per batch), and a model with interior
+/// mutability (a cache in a `Cell`) sees a batched call's writes on the clone, not on itself. The
+/// generic models need their parts to be `Clone`: a
+/// [`NormalDistribution`](crate::microfacet::NormalDistribution) or
 /// [`LayerInterface`](crate::bxdf::LayerInterface) of your own should derive it.
 pub trait Batch: Prepare + Clone
 where

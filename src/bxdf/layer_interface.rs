@@ -8,14 +8,14 @@ use crate::param::Eta;
 /// monochrome BSDF that reflects and transmits light, both ways, with its relative index
 /// `η = η_inside / η_outside` and the same interface for the other transport mode.
 ///
-/// The layered random walk crosses the interface both ways. On the way in from the viewer it
-/// uses the interface as given (radiance transport: the `1/η'²` of refraction applies), and
-/// where it samples the interface from the light's side (the exit direction `wi`, pbrt-v4's
-/// `wis`) it uses the adjoint, [`for_transport`](Self::for_transport)`(Importance)`, whose
-/// value `f*(wi, w) = f(w, wi)` is the one the path needs (Veach 1997, §5.2; pbrt-v4
-/// §14.3.2). An interface is either made of delta lobes only ([`SmoothDielectric`]) or of
-/// lobes with a density only ([`RoughDielectric`]); the walk's estimators choose their form
-/// from [`Prepare::lobes`].
+/// The layered random walk crosses the interface both ways. On the way in from the viewer it uses
+/// the interface in radiance mode, whatever mode it was given in (`Layered::new` takes
+/// [`for_transport`](Self::for_transport)`(Radiance)`: the `1/η'²` of refraction applies), and
+/// where it samples the interface from the light's side (the exit direction `wi`, pbrt-v4's `wis`)
+/// it uses the adjoint, [`for_transport`](Self::for_transport)`(Importance)`, whose value
+/// `f*(wi, w) = f(w, wi)` is the one the path needs (Veach 1997, §5.2; pbrt-v4 §14.3.2). An
+/// interface is either made of delta lobes only ([`SmoothDielectric`]) or of lobes with a density
+/// only ([`RoughDielectric`]); the walk's estimators choose their form from [`Prepare::lobes`].
 ///
 /// Implemented for [`RoughDielectric`], [`SmoothDielectric`] and [`CompensatedDielectric`]
 /// (a rough coat that keeps the energy its microfacets scatter more than once: the stack's

@@ -65,10 +65,10 @@ const TAG_SAMPLE: u64 = 0x7361_6d70;
 /// Russian roulette after four events once the throughput is below ¼. [`Bxdf::sample`] walks
 /// from `wo` until the path leaves through the top (pbrt-v4's `Sample_f`, without its Russian
 /// roulette, which would make the density depend on the spectrum): the sample's
-/// [`weight`](BxdfSample::weight) is the path's unbiased weight, its `pdf` an independent
-/// estimate of the density at its direction (one more walk, what `pdf` computes: a renderer
-/// weighs it by MIS as it would an exact model's; pbrt-v4 returns the path's density and
-/// flags it), its `f` the value that keeps the weight. [`Bxdf::pdf`]
+/// [`weight`](BxdfSample::weight) is the path's unbiased weight, its `pdf` an independent estimate
+/// of the density at its direction (what `pdf` computes, `samples` walks more: a renderer weighs it
+/// by MIS as it would an exact model's; pbrt-v4 returns the path's density and flags it), its `f`
+/// the value that keeps the weight. [`Bxdf::pdf`]
 /// is an unbiased estimate of the density of [`Bxdf::sample`]'s directions — not pbrt-v4's
 /// approximation, which mixes in a uniform density: the same walk as the sampler, summing at
 /// each hit of the top from inside the density of leaving there toward `wi` (a rough top),
@@ -108,15 +108,16 @@ const TAG_SAMPLE: u64 = 0x7361_6d70;
 /// renderer averages it over the pixel like any other noise; the expectation is what the
 /// laws speak of.
 ///
-/// **Cost** (`benches/combinators.rs`, RGB, one walk): `eval` 0.47 µs, `pdf` 0.52 µs,
-/// `sample` 0.84 µs for the `CoatedDiffuse` above, 0.65, 0.64 and 1.1 µs for the
-/// `CoatedConductor`; `n` walks cost `n` times as much. The delta chains cost a smooth coat
-/// (η 1.5) over `Mix(Mirror, Lambert)` 1.20×, 1.54× and 1.13× what its walks cost without
-/// them (0.15, 0.23 and 0.22 µs with them), over a mirror under a scattering layer 1.41×,
-/// 1.58× and 1.47× (the README's combinators section). A chain goes on with the probability
-/// `F` that the coat's underside reflects, whatever the path's weight: under a coat that
-/// reflects nearly everything from inside (η 1e3), a connection makes up to `max_depth / 2`
-/// round trips, and a walk costs up to `max_depth²/2` draws of the base.
+/// **Cost** (`benches/combinators.rs`, RGB, one walk; the README's run): `eval` 0.48 µs, `pdf`
+/// 0.50 µs, `sample` 0.79 µs for the `CoatedDiffuse` above, 0.60, 0.66 and 1.04 µs for a
+/// `CoatedConductor` of gold (coat `α = 0.1`, gold `α = 0.3`); `eval` and `pdf` cost about `n`
+/// times as much with `n` walks (3.5× with four), `sample` less (2.5×), whose path is one walk
+/// whatever `n`. The delta chains cost a smooth coat (η 1.5) over `Mix(Mirror, Lambert)` 1.20×,
+/// 1.54× and 1.13× what its walks cost without them (0.15, 0.23 and 0.22 µs with them), over a
+/// mirror under a scattering layer 1.41×, 1.58× and 1.47× (the README's combinators section). A
+/// chain goes on with the probability `F` that the coat's underside reflects, whatever the path's
+/// weight: under a coat that reflects nearly everything from inside (η 1e3), a connection makes up
+/// to `max_depth / 2` round trips, and a walk costs up to `max_depth²/2` draws of the base.
 ///
 /// **Laws** (measured by `tests/bxdf_layered.rs` and `tests/layered_reference.rs`, in
 /// expectation: [`verify::check_bxdf`](crate::verify::check_bxdf) checks a
@@ -130,11 +131,11 @@ const TAG_SAMPLE: u64 = 0x7361_6d70;
 /// `F + (1 − F)(1 − F̄ᵢ) ρ / (1 − ρ F̄ᵢ)` (within the standard error, ~6e-4); `Glazed`, which
 /// leaves the internal reflection out, is brighter (`η = 1.5`, `ρ = 0.8`, normal incidence:
 /// 0.808 against 0.633). A rough coat loses, each time the light meets it, what its
-/// single-scattering microfacet interface loses (a [`RoughDielectric`](super::RoughDielectric)
-/// of `η = 1.5` seen from inside loses 5–16% at `α = 0.2` and 25–35% at `α = 0.5`, measured
-/// by `tests/energy_compensation.rs`), so the white furnace measures 0.99997
-/// (`α = 0.001`), 0.975 (`α = 0.05`) and 0.70 (`α = 0.3`) at `η = 1.5`: a property of the
-/// coat, not of the walk (the brute-force walk measures the same). With the
+/// single-scattering microfacet interface loses (a [`RoughDielectric`](super::RoughDielectric) of
+/// `η = 1.5` seen from inside loses 5–16% at `α = 0.2` and 25–35% at `α = 0.5` at
+/// `θ = 0°, 40°, 70°, 85°`, measured by `tests/energy_compensation.rs`), so the white furnace
+/// measures 0.99997 (`α = 0.001`), 0.975 (`α = 0.05`) and 0.70 (`α = 0.3`) at `η = 1.5`: a property
+/// of the coat, not of the walk (the brute-force walk measures the same). With the
 /// energy-compensated interface as the coat
 /// ([`RoughDielectric::with_energy_compensation`](super::RoughDielectric::with_energy_compensation),
 /// a [`CompensatedDielectric`](super::CompensatedDielectric) top) the loss is put back: the

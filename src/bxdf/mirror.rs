@@ -16,8 +16,9 @@ use glam::Vec3;
 /// mirror, [`Conductor`] for a polished metal.
 ///
 /// A delta lobe: [`eval`](super::Bxdf::eval) and [`pdf`](super::Bxdf::pdf) are zero, and
-/// [`sample`](super::Bxdf::sample) returns the mirror direction with `pdf = 1` and a weight of exactly
-/// `F(cos θo)`. One-sided (`None` for `wo.z ≤ 0`). Laws: positive; its albedo is `F ≤ 1`.
+/// [`sample`](super::Bxdf::sample) returns the mirror direction with `pdf = 1` and a weight of
+/// `F(cos θo)` up to `f32` rounding (within 1e-6 relative, `tests/bxdf_specular.rs`). One-sided
+/// (`None` for `wo.z ≤ 0`). Laws: positive; its albedo is `F ≤ 1`.
 ///
 /// [`NoFresnel`]: crate::fresnel::NoFresnel
 /// [`Conductor`]: crate::fresnel::Conductor

@@ -454,7 +454,7 @@ impl<V> At<V> {
 
 /// A BRDF or BSDF in the local shading frame.
 ///
-/// Implementations are total: for any finite unit `wo`, `wi` and `u ∈ [0, 1)²`, `uc ∈ [0, 1)`,
+/// Implementations are total: for any finite unit `wo`, `wi` and `u ∈ [0, 1]²`, `uc ∈ [0, 1]`,
 /// `eval` is finite and non-negative, `pdf` finite and non-negative, and `sample` returns
 /// either `None` or a sample with a unit `wi`, a finite non-negative `f` and a positive finite
 /// `pdf`. The crate's models check the unit lengths and the random numbers' range with
@@ -640,10 +640,10 @@ pub trait Prepare {
     }
 }
 
-/// The preconditions of a hot-loop call, checked in debug builds (like glam's
-/// `glam_assert`): directions of unit length (to 1e-3; the models are accurate for any
-/// rounding of a unit vector) and random numbers in `[0, 1]`. Release builds check nothing
-/// and stay total: any finite input gives a finite, non-negative answer.
+/// The preconditions of a hot-loop call, checked in debug builds (like glam's `glam_assert`):
+/// directions of unit length (squared length within 1e-3 of 1; the models are accurate for any
+/// rounding of a unit vector) and random numbers in `[0, 1]`. Release builds check nothing and stay
+/// total: any finite input gives a finite, non-negative answer.
 #[inline(always)]
 fn debug_check(w: &[Vec3], u: &[f32]) {
     debug_assert!(

@@ -47,9 +47,9 @@ use glam::{Vec2, Vec3};
 /// **Laws** (measured in `tests/bxdf_phong.rs`):
 /// * positive and finite for every finite unit input, grazing (`z = 10⁻⁷`) and the exact
 ///   mirror configuration included;
-/// * reciprocal exactly: the relative error `|f(wo, wi) − f(wi, wo)|/f` is 0 over 20 000
-///   random pairs and 2 000 pairs near the mirror configuration, for every exponent tested
-///   (0 to 10⁶);
+/// * reciprocal exactly: the relative error `|f(wo, wi) − f(wi, wo)|/f` is 0 over 20 000 random
+///   pairs for every exponent tested (0 to 10⁶), and over up to 2 000 pairs near the mirror
+///   configuration for the sharp lobes (10³ to 10⁶);
 /// * energy-conserving for `k_d + k_s ≤ 1`: the directional albedo is `k_d + k_s` at normal
 ///   incidence (the lobe around `r = n` is never clipped, and `(p + 2)/(2π)` normalises
 ///   `cos^p α cos θi` over it exactly) and falls with the viewing angle as the horizon clips

@@ -22,8 +22,9 @@ use glam::Vec3;
 /// 1997, §5.2). `wo` may be on either side; total internal reflection gives `F = 1`.
 ///
 /// Delta lobes only: `eval` and `pdf` are zero. Laws: positive; in importance mode every
-/// sample's weight is exactly 1, so the albedo is `F + (1 − F) = 1` (the interface loses
-/// nothing); in radiance mode the refracted weight is `1/η'²`.
+/// sample's weight is 1 up to `f32` rounding (within 1e-5, `tests/bxdf_specular.rs`), so the
+/// albedo is `F + (1 − F) = 1` (the interface loses nothing); in radiance mode the refracted
+/// weight is `1/η'²`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SmoothDielectric {
     eta: Eta,

@@ -12,10 +12,11 @@ use glam::Vec3;
 /// R' = R + T² R / (1 − R²),   T' = 1 − R'        (R = F(cos θo), T = 1 − R)
 /// ```
 ///
-/// The geometric series of reflections inside the slab (pbrt-v4 §9.5.3). Refraction at the
-/// second face undoes the first, so transmitted light continues along `−wo`, with no radiance
-/// scaling. Delta lobes only: `eval` and `pdf` are zero; every sample's weight is exactly 1,
-/// so the albedo is `R' + T' = 1`. Two-sided: `wo` may be on either side.
+/// The geometric series of reflections inside the slab (pbrt-v4 §9.5.3). Refraction at the second
+/// face undoes the first, so transmitted light continues along `−wo`, with no radiance scaling.
+/// Delta lobes only: `eval` and `pdf` are zero; every sample's weight is 1 up to `f32` rounding
+/// (within 1e-5, `tests/bxdf_specular.rs`), so the albedo is `R' + T' = 1`. Two-sided: `wo` may be
+/// on either side.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ThinDielectric {
     eta: Eta,

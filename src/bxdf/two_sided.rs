@@ -13,7 +13,7 @@ fn mirror(w: Vec3) -> Vec3 {
 /// mirror image of `B` through the surface's plane,
 ///
 /// ```text
-/// f(wo, wi) = f_B(wo, wi)                    wo.z > 0
+/// f(wo, wi) = f_B(wo, wi)                    wo.z ≥ 0
 /// f(wo, wi) = f_B(mirror(wo), mirror(wi))    wo.z < 0,   mirror(x, y, z) = (x, y, −z)
 /// ```
 ///

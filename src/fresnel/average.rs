@@ -13,14 +13,13 @@ const PANELS: usize = 8;
 /// (`η < 1`), costs digits (5e-3 at `η = 1/2.4`; [`Dielectric`]'s [`FresnelAverage`] goes
 /// round it). Measured against a 2¹⁶-interval midpoint rule in `f64`
 /// (`tests/energy_compensation.rs`, which asserts 2.5e-7): Schlick's term within 1.0e-7, the
-/// exact conductor's for `η ≥ 1` or large `κ` (with `η < 1` and small `κ` it has a kink or a
-/// sharp bend: [`Conductor`]'s [`FresnelAverage`] grades its panels there, within 2.0e-7 for
-/// `η` from 0.143 to 1.5 and `κ` from 0 to 4), the dielectric's ([`FresnelAverage`], `η` from 1/2.4 to
-/// 2.4 with `|η − 1| ≥ 1e-3`) within 1.6e-7; closer to 1 the dielectric's rise at grazing
-/// incidence is narrower than a panel (6.9e-7 at `η = 1.0001`, of an average of 3.3e-5, held
-/// below 1e-6 by the same test). Also the average of
-/// a directional albedo `E(μ)` over uniformly incident light (`Ē`), for the tables models
-/// build at construction ([`Glazed`](crate::bxdf::Glazed), [`Plastic`](crate::bxdf::Plastic)).
+/// exact conductor's for `η ≥ 1` or large `κ` (with `η < 1` and small `κ` it has a kink or a sharp
+/// bend: [`Conductor`]'s [`FresnelAverage`] grades its panels there, within 2.0e-7 for `η` from
+/// 0.143 to 1.5 and `κ` from 0 to 4), the dielectric's ([`FresnelAverage`], `η` from 1/2.4 to 2.4
+/// with `|η − 1| ≥ 1e-3`) within 1.6e-7; closer to 1 the dielectric's rise at grazing incidence is
+/// narrower than a panel (6.9e-7 at `η = 1.0001`, of an average of 3.3e-5, held below 1e-6 by the
+/// same test). Also the average of a directional albedo `E(μ)` over uniformly incident light (`Ē`),
+/// for the tables models build at construction ([`Plastic`](crate::bxdf::Plastic)'s).
 #[must_use]
 pub fn cosine_weighted_average<S: Spectrum>(f: impl Fn(f32) -> S) -> S {
     cosine_weighted_part(&f, 0.0, 1.0, PANELS)

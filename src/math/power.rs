@@ -22,7 +22,7 @@ const ZERO_LOG2: f32 = -151.0;
 /// proof that `x < b` gives a zero power has two steps. First, `b < 2^q` exactly, where
 /// `q = −151/p` rounded to `f32`: the library's power of two is within an ulp of `2^q` and
 /// four ulps are more than one. Then `x^p < b^p < 2^(pq)`, and `pq` is `−151` to within
-/// `2⁻²⁴` relative, so `x^p < 2⁻¹⁵¹ (1 + 6.2e-6)`: half of `2⁻¹⁵⁰`, the largest value that
+/// `2⁻²⁴` relative, so `x^p < 2⁻¹⁵¹ (1 + 6.3e-6)`: half of `2⁻¹⁵⁰`, the largest value that
 /// rounds to `+0` (the smallest subnormal is `2⁻¹⁴⁹`). What carries the proof is that factor
 /// of two: an error "within an ulp" says nothing down there, where one ulp is `2⁻¹⁴⁹`
 /// absolute. `powf` rounds to `+0` any value it computes below `2⁻¹⁵⁰`, so it is enough that

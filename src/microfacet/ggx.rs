@@ -18,8 +18,9 @@ use glam::{Vec2, Vec3};
 /// 2014, eqs. 85–86. Widths `α ∈ [1e-4, 10]` ([`Alpha`]).
 ///
 /// Laws (measured by the crate's tests, `tests/microfacet.rs`): `D` is normalised, and Smith
-/// `Λ` is exact, so the projected area `∫ G1 max(0, w·m) D dm = cos θ` and `∫ D_w dm = 1` hold
-/// within the Monte Carlo error for `α` from 0.01 to 2, both at 1:1 and 1:4 anisotropy.
+/// `Λ` is exact, so the projected area `∫ G1 max(0, w·m) D dm = cos θ` holds within the Monte
+/// Carlo error for `α` from 0.01 to 2, and `∫ D_w dm = 1` for `α` of 0.05, 0.3 and 1, both at
+/// 1:1 and 1:4 anisotropy.
 ///
 /// Sampling: [`sample`](NormalDistribution::sample) draws visible normals by the
 /// spherical-cap method (Dupuy & Benyoub 2023);
@@ -138,7 +139,7 @@ impl Ggx {
         if usable { unit } else { Vec3::Z }
     }
 
-    /// The lower end `b` of Eto & Tokuyoshi's bounded spherical cap for the view `w`
+    /// `b` for Eto & Tokuyoshi's bounded spherical cap `z ≥ −b` for the view `w`
     /// (upper hemisphere) and its stretched form `wh`: `b = k wh.z` with
     /// `k = (1 − a²) s² / (s² + a² wz²)`, `s = 1 + √(wx² + wy²)`, `a = min(αx, αy, 1)`
     /// (Eto & Tokuyoshi 2023, eqs. 5–6).
@@ -194,8 +195,8 @@ impl Ggx {
 }
 
 /// What a [`Ggx`] view keeps in [`View::extra`] for its samplers: the view `wh` in the
-/// configuration where the distribution is the uniform hemisphere (`extra[0..3]`), the lower
-/// end `−b` of the cap [`sample_reflection`](NormalDistribution::sample_reflection) draws from
+/// configuration where the distribution is the uniform hemisphere (`extra[0..3]`), `b` for the
+/// cap `z ≥ −b` that [`sample_reflection`](NormalDistribution::sample_reflection) draws from
 /// (`extra[3]`: Eto & Tokuyoshi's bounded cap, or `wh.z` for plain visible normals), and the
 /// reflection density's factor (`extra[4]`): the bounded sampler's density of a normal that
 /// reflects above the horizon is `extra[4] · (w·m) · D(m)` with

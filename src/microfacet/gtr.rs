@@ -1,4 +1,4 @@
-//! Burley's generalised Trowbridge-Reitz (GTR) distribution, isotropic, any `γ > 0`.
+//! Burley's generalised Trowbridge-Reitz (GTR) distribution, isotropic, `γ ∈ (0, 10]`.
 
 use super::smith_table::{SmithTable, lambda_from_g1};
 use super::{NormalDistribution, SampleDCos, Sampling, View};

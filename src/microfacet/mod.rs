@@ -13,7 +13,7 @@
 //! | --- | --- | --- | --- |
 //! | [`Ggx`] | Trowbridge-Reitz / GGX, anisotropic | exact, closed form | visible normals (spherical caps) and bounded VNDF for reflection |
 //! | [`Beckmann`] | Beckmann, anisotropic | exact (erf), or Walter's rational G1 | visible normals, `D cos θ` |
-//! | [`Gtr`] | Burley's generalised Trowbridge-Reitz, any `γ > 0`, isotropic | exact Smith, tabulated at construction | `D cos θ` |
+//! | [`Gtr`] | Burley's generalised Trowbridge-Reitz, `γ ∈ (0, 10]`, isotropic | exact Smith, tabulated at construction | `D cos θ` |
 //! | [`BlinnPhongNdf`] | normalised Blinn-Phong, isotropic | Beckmann's of the same `α` (approximate), or exact Smith tabulated | `D cos θ` |
 //!
 //! All functions work in the local frame (`z` the macro-normal) and are total: grazing

@@ -28,7 +28,8 @@ const K3_0: f32 = 0.373_176_33;
 /// `¼ √(105/π)`: `Y_{3,2}/(z(x² − y²))`.
 const K3_2: f32 = 1.445_305_7;
 
-/// The band the closed forms reach: [`basis`] uses them for up to 16 coefficients.
+/// The number of bands (`l ≤ 3`) the closed forms cover: [`basis`] uses them for up to 16
+/// coefficients.
 pub const CLOSED_FORM_BANDS: usize = 4;
 
 /// The flat index of `Y_lm`: `l(l + 1) + m`.

@@ -239,7 +239,7 @@ pub fn evaluation_mu(i: usize, nodes: usize) -> f32 {
 /// The conductor table's entry at `μ` node `i` and `α` node `j` ([`super::MU_NODES`] ×
 /// [`super::ALPHA_NODES`]): the albedo of `Microfacet<D, NoFresnel>` with height-correlated
 /// masking at `μ = evaluation_mu(i)` and `α = (j / (ALPHA_NODES − 1))²`, integrated to
-/// [`CONDUCTOR_TOLERANCE`] and rounded to `f32`. The column `α = 0` is the smooth mirror's
+/// [`CONDUCTOR_TOLERANCE`] and rounded to `f32`. The row `α = 0` is the smooth mirror's
 /// albedo, exactly 1.
 #[must_use]
 pub fn conductor_entry(family: Family, i: usize, j: usize) -> f32 {
@@ -270,7 +270,7 @@ fn conductor_albedo<D: NormalDistribution + Copy>(dist: &D, wo: Vec3) -> f64 {
 /// importance mode (reflection plus transmission) from the outside, the part of it that
 /// reflects, and the albedo from the inside, at `|μ| = evaluation_mu(i)`,
 /// `α = (j / (DIELECTRIC_ALPHA_NODES − 1))²` and `η = eta_node(k)`, integrated to
-/// [`DIELECTRIC_TOLERANCE`] and rounded to `f32`. The column `α = 0` is the smooth
+/// [`DIELECTRIC_TOLERANCE`] and rounded to `f32`. The row `α = 0` is the smooth
 /// interface's: `E = 1` from either side and `R_out` the Fresnel reflectance.
 #[must_use]
 pub fn dielectric_entry(family: Family, i: usize, j: usize, k: usize) -> [f32; 3] {

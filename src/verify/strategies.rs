@@ -269,11 +269,12 @@ pub fn etas() -> impl Strategy<Value = Eta> + Clone {
     .prop_map(|e| Eta::new(e.clamp(Eta::MIN, Eta::MAX)).expect("within Eta's range"))
 }
 
-/// Conductors' complex indices [`ComplexIor`] `η + iκ` (single channel): real metals (gold,
-/// silver, copper and aluminium, per sRGB channel, as Mitsuba 3 tabulates them; a fifth of
-/// the draws), metal-like values (`η` log-uniform in `[0.01, 5]`, `κ` uniform in `[0, 10]`;
-/// half), and the extremes of the accepted range (`η` log-uniform in `[1e-3, 1e3]`, `κ`
-/// zero or log-uniform in `[1e-3, 1e3]`; the rest).
+/// Conductors' complex indices [`ComplexIor`] `η + iκ` (single channel): real metals (gold, silver,
+/// copper and aluminium, per sRGB channel, as Mitsuba 3 tabulates them; a fifth of the draws),
+/// metal-like values (`η` log-uniform in `[0.01, 5]`, `κ` uniform in `[0, 10]`; two fifths), and
+/// extremes (`η` log-uniform in `[1e-3, 1e3]`, `κ` zero or log-uniform in `[1e-3, 1e3]`; two
+/// fifths; [`ComplexIor::new`] accepts `η` down to `f32::MIN_POSITIVE`, which these draws do not
+/// reach).
 ///
 /// ```
 /// use lobe::fresnel::conductor;

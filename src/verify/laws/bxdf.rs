@@ -376,8 +376,8 @@ pub fn chi2_bxdf<B: Bxdf + ?Sized>(bxdf: &B, wo: Vec3, config: &Chi2Config) -> C
 }
 
 /// How far [`Bxdf::sample`]'s `f` and `pdf` are from [`Bxdf::eval`] and [`Bxdf::pdf`] at the
-/// sampled direction: the largest relative differences `(f, pdf)` over
-/// `config.consistency_samples` non-delta samples drawn with `config.seed`; NaN if any
+/// sampled direction: the largest relative differences `(f, pdf)` over the non-delta samples
+/// among `config.consistency_samples` drawn with `config.seed`; NaN if any
 /// comparison is NaN.
 ///
 /// `config` is a `&`[`Config`] (or the older `&`[`BxdfCheck`](super::BxdfCheck)).

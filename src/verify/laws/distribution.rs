@@ -2,12 +2,13 @@
 //! normalisation, projected area, visible-normal normalisation, and the sampler against its
 //! density (chi-square); [`check_ndf`] runs them all.
 //!
-//! The integrals are estimated by importance sampling with a proposal that knows nothing of
-//! the distribution under test ([`integrate_hemisphere`]): directions uniform on the
-//! hemisphere, *stretched* by the caller's `stretch = (sx, sy)` (usually the distribution's
-//! widths), so that the proposal has the right scale for a narrow lobe and heavier tails than
-//! any common distribution. A check that used the distribution's own sampler would be
-//! circular.
+//! The integrals are estimated by importance sampling with a proposal that knows nothing of the
+//! distribution under test ([`integrate_hemisphere`]): a defensive mixture, in equal parts, of
+//! cosine-weighted and uniform directions *stretched* by the caller's `stretch = (sx, sy)` (usually
+//! the distribution's widths), so that the proposal has the right scale for a narrow lobe, and of
+//! uniform directions unstretched, whose heavier tails bound the weights where a distribution's
+//! tails are wider than its width suggests. A check that used the distribution's own sampler would
+//! be circular.
 //!
 //! For the same reason the sampler checks run the chi-square test on *unstretched*
 //! normals, where a narrow lobe covers many bins instead of one.

@@ -103,9 +103,9 @@ pub struct ExpectedPair {
 }
 
 impl ExpectedPair {
-    /// `|forward − backward|` in combined standard errors: `0` when both sides agree
-    /// exactly, `∞` when they differ with no spread, NaN when a mean or a standard error is
-    /// not finite (an infinite estimate: no claim, and a failed check).
+    /// `|forward − backward|` in combined standard errors: `0` when the means agree to 1e-5
+    /// relative (round-off), `∞` when they differ with no spread, NaN when a mean or a standard
+    /// error is not finite (an infinite estimate: no claim, and a failed check).
     #[must_use]
     pub fn z_score(&self) -> f64 {
         if !(self.forward.is_finite() && self.backward.is_finite()) {
@@ -453,14 +453,14 @@ fn measure_direction<B: Bxdf + ?Sized>(
             cells.push((observed[b] as f64, total * mean, total * total * var));
         }
     }
-    // The samples that drew nothing: one of the chi-square's cells when it expects enough,
-    // never pooled with others (merged into a direction bin, 390 failures against none
-    // expected passed with p = 0.0044), and always tested alone: the Poisson chance of as
-    // many or more for the expectation raised by k of its own standard errors. The test's
-    // share of the significance, α, is halved between the raise (k = Φ⁻¹(1 − α/2): the
-    // estimate falls that far below the true expectation with probability α/2) and the
-    // Poisson tail (rejected below α/2), so that a correct model fails it with probability α
-    // at most. The direction's significance is shared with the chi-square (Šidák).
+    // The samples that drew nothing: one of the chi-square's cells when it expects enough, never
+    // merged into another (merged into a direction bin, 390 failures against none expected passed
+    // with p = 0.0044; a small pool may be merged into it), and always tested alone: the Poisson
+    // chance of as many or more for the expectation raised by k of its own standard errors. The
+    // test's share of the significance, α, is halved between the raise (k = Φ⁻¹(1 − α/2): the
+    // estimate falls that far below the true expectation with probability α/2) and the Poisson tail
+    // (rejected below α/2), so that a correct model fails it with probability α at most. The
+    // direction's significance is shared with the chi-square (Šidák).
     let expected_missing = total * (1.0 - mass_total).max(0.0);
     if expected_missing >= MIN_EXPECTED {
         cells.push((missing as f64, expected_missing, total * total * mass_var));
@@ -650,11 +650,11 @@ pub fn sampling_and_consistency_in_expectation<B: Bxdf + ?Sized>(
 }
 
 /// **Sampling in expectation**: at every viewer direction, Pearson's chi-square of
-/// `config.chi2_samples` samples against the counts of the *expected* density, each bin's
-/// mass the mean of `16 × config.expectation_evaluations` seeded `pdf` estimates at stratified
-/// points of the bin, its variance added to the term's denominator. `8 × 16` equal-area bins,
-/// low-count bins pooled, delta samples and failures counted in a no-sample bin; Šidák over
-/// the directions. The figure is the smallest p-value.
+/// `config.chi2_samples` samples against the counts of the *expected* density, each bin's mass the
+/// mean of `16 × config.expectation_evaluations` seeded `pdf` estimates at stratified points of the
+/// bin, its variance added to the term's denominator. `8 × 16` equal-area bins, low-count bins
+/// pooled, delta samples and failures counted in a no-sample bin; Šidák over the directions and, at
+/// each, between the chi-square and the no-sample test. The figure is the smallest p-value.
 #[must_use]
 pub fn sampling_in_expectation<B: Bxdf + ?Sized>(bxdf: &B, config: &Config) -> LawReport {
     sampling_and_consistency_in_expectation(bxdf, config).0

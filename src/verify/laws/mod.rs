@@ -1,17 +1,19 @@
 //! The laws room: what a model must obey, measured, reported and checked, one file per
 //! subject.
 //!
-//! What lives here: `bxdf.rs`, the laws of a BSDF of any spectrum (positivity, reciprocity,
-//! the energy bound by two albedo estimators, sampling, consistency), [`check_bxdf`], and
-//! [`Channel`]; `expectation.rs`, the laws of a stochastic BSDF checked in expectation
-//! (reciprocity, sampling against the expected density, the sampled weight against the
-//! expected value) and [`check_bxdf_in_expectation`], which `check_bxdf` calls for one; `distribution.rs`, the laws of a microfacet distribution (`D` normalisation,
-//! projected area, visible normals, sampling) and [`check_ndf`]; and what the two share: the
-//! one configuration ([`Config`], with the older [`BxdfCheck`] that converts into it,
-//! `config.rs`) and the reports ([`Law`], [`LawReport`], [`Report`], `report.rs`).
+//! What lives here: `bxdf.rs`, the laws of a BSDF of any spectrum (positivity, reciprocity, the
+//! energy bound by two albedo estimators, sampling, consistency), [`check_bxdf`], and [`Channel`];
+//! `expectation.rs`, the laws of a stochastic BSDF checked in expectation (reciprocity, sampling
+//! against the expected density, the sampled weight against the expected value) and
+//! [`check_bxdf_in_expectation`], which `check_bxdf` calls for one; `distribution.rs`, the laws of
+//! a microfacet distribution (`D` normalisation, projected area, visible normals, sampling) and
+//! [`check_ndf`]; and what they share: the one configuration ([`Config`], with the older
+//! [`BxdfCheck`] that converts into it, `config.rs`) and the reports ([`Law`], [`LawReport`],
+//! [`Report`], `report.rs`).
 //!
-//! Each file measures with the tools of the statistics room and nothing else; neither file
-//! uses the other.
+//! Each file measures with the tools of the statistics room; `bxdf.rs` and `expectation.rs` use
+//! each other (`check_bxdf` hands a stochastic model to `check_bxdf_in_expectation`, which reuses
+//! the exact laws that hold for one), and `distribution.rs` uses neither.
 
 mod bxdf;
 mod config;

@@ -52,9 +52,10 @@ pub struct Chi2Config {
     pub samples: usize,
     /// Seed of the [`Pcg32`] that draws the sampler's random numbers. Default 1.
     pub seed: u64,
-    /// The test rejects when the p-value is below this. Default 0.01. A caller running
-    /// several tests should pass the Šidák-corrected level [`sidak(0.01, n)`](super::sidak)
-    /// so that the chance of any false rejection stays at 1 %.
+    /// The whole test's level, default 0.01: the chi-square and the no-sample count each reject at
+    /// its Šidák share of two, so that the test rejects a correct sampler with this probability. A
+    /// caller running several tests should pass the Šidák-corrected level
+    /// [`sidak(0.01, n)`](super::sidak) so that the chance of any false rejection stays at 1 %.
     pub significance: f64,
     /// Bins expecting fewer samples than this are pooled (see [`chi2_sphere`]). Default 5,
     /// the usual rule of thumb for Pearson's approximation.
@@ -94,8 +95,8 @@ pub enum Chi2Bin {
     },
     /// The samples for which the sampler returned `None`, expected `N (1 − ∫ pdf)`.
     NoSample,
-    /// The pool of low-count bins (merged into the regular bin of smallest expectation
-    /// when the pool alone expects fewer than `min_expected` samples).
+    /// The pool of low-count bins (merged into the bin of smallest expectation, which may be
+    /// the no-sample bin, when the pool alone expects fewer than `min_expected` samples).
     Pooled,
 }
 
@@ -241,7 +242,7 @@ impl fmt::Display for Chi2Report {
 ///   often than its density admits is caught by that count alone: it is always tested by its
 ///   Poisson tail, for the expectation raised by the quadrature's error and accuracy floors,
 ///   and the chi-square and this test each hold the Šidák share of two of the significance
-///   (among 256 bins of the chi-square, 298 failures against 207 expected, 6.4 σ, passed
+///   (among 256 bins of the chi-square, 298 failures against 207 expected, 6.3 σ, passed
 ///   with p = 0.12). When the expectation is at least `min_expected` the bin is also one of
 ///   the chi-square's; below that it is never pooled with others.
 /// * **Expected counts.** `N ∫_bin pdf dω`, integrated in `(cos θ, φ)`, where
@@ -255,10 +256,11 @@ impl fmt::Display for Chi2Report {
 ///   `f32` at directions built from `f64` angles.
 /// * **Pooling.** Bins expecting fewer than `min_expected` samples are summed into one
 ///   pooled bin. If that pool still expects fewer than `min_expected`, it is merged into
-///   the regular bin with the smallest expectation (or, if there is none, kept as it is).
-///   The no-sample bin is never pooled: it is one of the bins when it expects at least
-///   `min_expected`, and left out of the statistic otherwise (its count is tested alone in
-///   any case, above).
+///   the kept bin with the smallest expectation (or, if there is none, kept as it is). The
+///   no-sample bin is never merged into another: it is one of the bins when it expects at
+///   least `min_expected`, and left out of the statistic otherwise (its count is tested alone
+///   in any case, above); a small pool may be merged into it, when it is the smallest bin
+///   kept.
 /// * **Outright failures.** A non-finite or non-unit sample, a sample in a bin where the
 ///   density integrates to zero, and a negative or non-finite density value each fail the
 ///   test whatever the statistic; they are counted in the report.

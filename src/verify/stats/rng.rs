@@ -100,8 +100,10 @@ impl Pcg32 {
 /// * `fill_bytes` writes successive `next_u32` outputs in little-endian byte order.
 /// * [`SeedableRng::from_seed`](rand_core::SeedableRng::from_seed) takes 16 bytes: the seed
 ///   as a little-endian `u64`, then the stream, so `from_seed(seed)` is
-///   `Pcg32::new(u64::from_le_bytes(seed[..8]), u64::from_le_bytes(seed[8..]))` — the
-///   layout `rand_pcg::Pcg32` uses, with the same sequence.
+///   `Pcg32::new(u64::from_le_bytes(seed[..8]), u64::from_le_bytes(seed[8..]))`: the byte
+///   layout of `rand_pcg::Pcg32`'s seed, but the second word is a stream, as in
+///   `rand_pcg::Pcg32::new(state, stream)` (whose seeding [`Pcg32::new`] follows);
+///   `rand_pcg`'s own `from_seed` takes that word as the increment and gives another.
 ///
 /// ```
 /// use lobe::verify::Pcg32;
