@@ -1,9 +1,9 @@
-//! Every model's batched calls (`lobe::batch`) against its scalar calls, on the 4,096 inputs
-//! of `benches/common/inputs.rs` (the transmissive models with the sides mixed, `TwoSided`
-//! seen from below for half of them), in interleaved rounds.
+//! The batched calls (`lobe::batch`) of 25 configurations of models and combinators, against their
+//! scalar calls, on the 4,096 inputs of `benches/common/inputs.rs` (the transmissive models with
+//! the sides mixed, `TwoSided` seen from below for half of them), in interleaved rounds.
 //!
 //! ```sh
-//! cargo bench --bench batched            # every model
+//! cargo bench --bench batched            # all 25
 //! cargo bench --bench batched -- Mix     # the models whose name contains "Mix"
 //! cargo bench --bench batched -- --test  # one short round (CI runs every bench so)
 //! cargo bench --bench batched -- --lanes 16  # batched calls of 16 lanes each
@@ -282,7 +282,7 @@ fn main() {
     time!("Lambert", lambert, i);
     time!("Oren-Nayar σ 0.4", OrenNayar::new(rgb, 0.4).unwrap(), i);
     let eon = EnergyPreservingOrenNayar::new(rgb, 0.4).unwrap();
-    time!("EON σ 0.4", eon, i);
+    time!("EON r 0.4", eon, i);
     let disney = DisneyDiffuse::new(rgb, Roughness::new(0.5).unwrap()).unwrap();
     time!("Disney diffuse", disney, i);
     let phong = Phong::new(rgb * 0.5, Vec3::splat(0.4), 30.0).unwrap();
@@ -306,7 +306,7 @@ fn main() {
     time!("Plastic α 0.2", plastic, i);
     let plastic = Plastic::compensated(rgb, Ggx::isotropic(a(0.2)), glass).unwrap();
     time!("Plastic α 0.2 compensated", plastic, i);
-    time!("Sheen σ 0.5", Sheen::new(rgb, 0.5).unwrap(), i);
+    time!("Sheen r 0.5", Sheen::new(rgb, 0.5).unwrap(), i);
     let sheet = DiffuseTransmission::new(rgb * 0.5, rgb * 0.4).unwrap();
     time!("DiffuseTransmission", sheet, s);
     time!(

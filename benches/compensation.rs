@@ -5,11 +5,11 @@
 //! cargo bench --bench compensation
 //! ```
 //!
-//! The criterion group times every pair twice, in the order A B A B, so that the machine's
-//! drift between the first and the second half falls on both; then the interleaved rounds of
-//! `common/interleave.rs` time the GGX conductor pair against each other in alternation
-//! (A B A B …, 31 rounds) and print each one's median and the median of the per-round
-//! ratios — the figure the issue's bar (compensated `eval` at most 1.3× the uncompensated
+//! The criterion group times every pair's `eval` twice, in the order A B A B, so that the machine's
+//! drift between the first and the second half falls on both, and `pdf` and `sample` once each;
+//! then the interleaved rounds of `common/interleave.rs` time the GGX conductor pair against each
+//! other in alternation (A B A B …, 31 rounds) and print each one's median and the median of the
+//! per-round ratios — the figure the issue's bar (compensated `eval` at most 1.3× the uncompensated
 //! one) is read from.
 
 #[path = "common/interleave.rs"]

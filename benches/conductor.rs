@@ -8,11 +8,11 @@
 //! cargo bench --bench conductor
 //! ```
 //!
-//! The per-channel baseline is a [`Fresnel`] term of this file whose `eval` is
-//! `eval_per_channel`: the models built with it return the same numbers, bit for bit (checked
-//! here before timing). Criterion times each pair in the order A B A B; then the interleaved
-//! rounds of `common/interleave.rs` time every kernel in alternation (31 rounds) and print each
-//! one's median with its range and the median of the per-round ratios.
+//! The per-channel baseline is a [`Fresnel`] term of this file whose `eval` is `eval_per_channel`:
+//! the models built with it return the same numbers, bit for bit (checked here before timing).
+//! Criterion times the bare term's pair in the order A B A B and each model's pair once, A then B;
+//! then the interleaved rounds of `common/interleave.rs` time every kernel in alternation (31
+//! rounds) and print each one's median with its range and the median of the per-round ratios.
 
 // Its `two_sided` is for the transmissive models of the other benches.
 #[allow(dead_code)]

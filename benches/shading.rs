@@ -1,8 +1,10 @@
 //! Criterion benchmarks of the shading hot loop, on the fixed 4,096 inputs of
 //! `benches/common/inputs.rs` (5% of the directions within 1° of the horizon):
 //!
-//! * `eval`, `pdf` and `sample` of every model (RGB where the model is generic over its
-//!   spectrum);
+//! * `eval`, `pdf` and `sample` of 17 configurations of the models, from Lambert to the
+//!   plastic (RGB where the model is generic over its spectrum; the combinators, the sheen, the
+//!   diffuse transmitter and the layered models are timed by `combinators.rs`, the
+//!   energy-compensated models by `compensation.rs`);
 //! * for the GGX conductor and the rough dielectric, the prepared path: `eval_pdf_prepared` on
 //!   states prepared ahead, the renderer's pattern of one `prepare(wo)` followed by eight
 //!   `eval_pdf_prepared` (each light, each MIS pair at one shading point), and the unprepared

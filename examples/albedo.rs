@@ -1,5 +1,5 @@
-//! Directional albedo `E(θo) = ∫ f(wo, wi) |cos θi| dωi` of every model, against the viewing
-//! angle θo from 0° to 89°.
+//! Directional albedo `E(θo) = ∫ f(wo, wi) |cos θi| dωi` of white models with a density (the
+//! panels below list them), against the viewing angle θo from 0° to 89°.
 //!
 //! Every model is white (ρ = 1, `k_s = 1`, or `F = 1` through
 //! [`NoFresnel`](lobe::fresnel::NoFresnel)), so an energy-conserving model that loses nothing
@@ -8,7 +8,7 @@
 //!
 //! * diffuse models: Lambert and EON stay at 1, the qualitative Oren-Nayar loses energy with
 //!   its roughness, Disney diffuse exceeds 1 at grazing angles when rough;
-//! * Phong and the normalised Blinn-Phong: at most 1 (the latter up to its 7.6% margin),
+//! * Phong and the normalised Blinn-Phong: at most 1 (the latter up to its 7.52% margin),
 //!   falling with θo as the horizon clips the lobe;
 //! * the seed's modified Blinn-Phong: far above 1 for broad lobes (≈2.9 at `p = 1`);
 //! * GGX and Beckmann conductors with `F = 1`: single scattering loses the energy that

@@ -9,9 +9,9 @@
 //! Delta lobes have no density and are not drawn: `Glazed` shows its diffuse part only. On
 //! the rough dielectric's common scale the reflection (about 4% of the light at η = 1.5) is
 //! small beside the transmission, which refraction also concentrates.
-//! This is the handout's "Phong model—plots" figure, for ten models of the crate (the GTR and
-//! Blinn-Phong-distribution conductors, the sheen, the diffuse transmitter and the composites
-//! are not drawn).
+//! This is the handout's "Phong model—plots" figure, for eleven models of the crate in ten figures
+//! (the GTR and Blinn-Phong-distribution conductors, the sheen, the diffuse transmitter, the
+//! energy-compensated models and the composites are not drawn).
 //!
 //! ```text
 //! cargo run --release --example lobes

@@ -268,13 +268,12 @@ fn assert_g1_within(case: &str, worst: (f32, f64), bound: f32) -> f32 {
     worst.0
 }
 
-/// The tabulated `G1` against exact Smith `G1` in `f64` over the whole domain of `α` and
-/// `γ`: GGX's closed form at `γ = 2` (Heitz 2014, eq. 72, `G1 = 2 / (1 + √(1 + α² tan² θ))`)
-/// from `α = 1e-4` to 10, and the quadrature of the projected-area identity elsewhere,
-/// including the corners `α = 10, γ = 10` (where the old quadrature, with one interval over
-/// `θm ∈ [1, π/2]`, missed the lobe at grazing: 0.0849 for 0.1002) and `α = 1e-4, γ = 1`
-/// (whose slopes span three decades: the old table's last cell spanned `θ` from 0 to 51°,
-/// 0.0039 off).
+/// The tabulated `G1` against exact Smith `G1` in `f64` over the whole domain of `α` and `γ`: GGX's
+/// closed form at `γ = 2` (Heitz 2014, eq. 72, `G1 = 2 / (1 + √(1 + α² tan² θ))`) from `α = 1e-4`
+/// to 10, and the quadrature of the projected-area identity elsewhere, including the corners
+/// `α = 10, γ = 10` (where the old quadrature, with one interval over `θm ∈ [1, π/2]`, missed the
+/// lobe at grazing: 0.0849 for 0.1002) and `α = 1e-4, γ = 1` (whose slopes span about three and a
+/// quarter decades: the old table's last cell spanned `θ` from 0 to 51°, 0.0039 off).
 ///
 /// The bound is the accuracy `Gtr`'s documentation states. What it allows for: the cubic
 /// interpolation between the table's nodes, whose error the same table built in `f64` puts

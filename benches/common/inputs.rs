@@ -1,6 +1,7 @@
-//! The fixed inputs the shading benchmarks run on, shared by `benches/shading.rs` and the
-//! peer benchmarks (`benches/peers/`): 4,096 viewer and light directions above the surface,
-//! 5% of each grazing (within 1° of the horizon), and the random numbers of `sample`.
+//! The fixed inputs the shading benchmarks run on, shared by the crate's benches (`shading.rs`,
+//! `combinators.rs`, `conductor.rs`, `materials.rs`, `batched.rs`) and the peer benchmarks
+//! (`benches/peers/`): 4,096 viewer and light directions above the surface, 5% of each grazing
+//! (within 1° of the horizon), and the random numbers of `sample`.
 
 use lobe::verify::Pcg32;
 use lobe::{Vec2, Vec3};

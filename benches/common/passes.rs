@@ -1,5 +1,6 @@
-//! The benchmark passes shared by `benches/shading.rs` and `benches/combinators.rs`: a group
-//! reported per input, and one pass of `eval`, `pdf` and `sample` over the inputs.
+//! The benchmark passes shared by the criterion benches (`shading.rs`, `combinators.rs`,
+//! `conductor.rs`, `materials.rs`): a group reported per input, and one pass of `eval`, `pdf` and
+//! `sample` over the inputs.
 
 use super::inputs::{Inputs, N};
 use criterion::{BenchmarkGroup, Criterion, Throughput};

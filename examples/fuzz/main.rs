@@ -16,15 +16,15 @@
 //! have a row of their own (fifteen configurations: the models' code is generic over the
 //! carrier, and `f32` and RGB run most of it).
 //!
-//! The inputs: cosines `0, ±1e-7, ±1e-20, ±1` and uniform on the sphere; azimuths random or
-//! exactly on an axis; `wi = wo`, `wi = −wo`, the mirror pair `(−wo.x, −wo.y, wo.z)`, the
-//! refraction pair through the macro-surface (for the dielectrics), a slightly perturbed
-//! mirror pair; directions of length `1 ± 1e-6`; `u` and `uc` at `0`, `1 − 2⁻²⁴`, `1` and
-//! random. For each input it calls `eval`, `pdf`, `sample`, `prepare`, `eval_prepared`,
-//! `pdf_prepared`, `eval_pdf_prepared` and `sample_prepared`; then it passes each batch of up
-//! to 4,096 inputs (the corner grid: one batch) to `eval_batch`, `pdf_batch` and
-//! `sample_batch`, cut into calls of 1 to 1,025 lanes, on the instruction set the run-time
-//! dispatch picks for this CPU (`lanes.rs`). It counts, per model:
+//! The inputs: cosines `0, ±1e-7, ±1e-20, ±1`, uniform on the sphere and uniform within 1e-3 of the
+//! horizon; azimuths random or exactly on an axis or a diagonal; `wi = wo`, `wi = −wo`, the mirror
+//! pair `(−wo.x, −wo.y, wo.z)`, the refraction pair through the macro-surface (for the
+//! dielectrics), a slightly perturbed mirror pair; directions of length `1 ± 1e-6`; `u` and `uc` at
+//! `0`, `1 − 2⁻²⁴`, `1` and random. For each input it calls `eval`, `pdf`, `sample`, `prepare`,
+//! `eval_prepared`, `pdf_prepared`, `eval_pdf_prepared` and `sample_prepared`; then it passes each
+//! batch of up to 4,096 inputs (the corner grid: one batch) to `eval_batch`, `pdf_batch` and
+//! `sample_batch`, cut into calls of 1 to 1,025 lanes, on the instruction set the run-time dispatch
+//! picks for this CPU (`lanes.rs`). It counts, per model:
 //!
 //! * **NaN**, **inf**, **neg**: results (a value's channel, a density, a sample's direction,
 //!   value or pdf) that are NaN, infinite, or negative;
@@ -80,7 +80,7 @@ use lanes::Scalar;
 use soa::Buffers;
 
 /// A model the fuzz takes: its scalar and batched calls, with a spectrum whose batched
-/// outputs [`lanes::check`] can hold (`f32` or RGB).
+/// outputs [`lanes::check`] can hold (`f32`, RGB or `Vec4`).
 trait Fuzzed: Batch<Spectrum: Buffers> {}
 
 impl<M: Batch<Spectrum: Buffers>> Fuzzed for M {}

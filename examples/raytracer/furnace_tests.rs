@@ -395,10 +395,10 @@ fn whitted_furnace_is_white_too() {
 /// cosine-weighted share of the wall's hemisphere, `sin²` of its half-angle) falls on the
 /// light, which absorbs it, the rest on the wall again. So the walls' radiance is
 /// `ρ E/π · Σ (ρ (1 − s))ᵏ = ρ L s / (1 − ρ (1 − s))`. With `ρ = 0.9` nine tenths of it has
-/// bounced more than once and most of it more than [`ROULETTE_DEPTH`](crate::path) times,
-/// where roulette ends paths: the render, with roulette and without (128 bounces: the
-/// series beyond leaves 1e-6), shows the closed form within k standard errors plus 1e-5. (A
-/// roulette that forgets to reweight its survivors renders far too dark here.)
+/// bounced more than once and most of it more than [`ROULETTE_DEPTH`](crate::path) times, where
+/// roulette ends paths: the render, with roulette and without (128 bounces: the series beyond
+/// leaves 1e-6), shows the closed form within k standard errors plus 1e-5 relative. (A roulette
+/// that forgets to reweight its survivors renders far too dark here.)
 #[test]
 fn an_integrating_sphere_renders_its_closed_form_with_and_without_roulette() {
     let (big, small, rho, l) = (1.0_f32, 0.05_f32, 0.9_f32, 50.0_f32);

@@ -1,17 +1,18 @@
 //! `raytracer`: the reference ray tracer of the `lobe` crate.
 //!
-//! A small but real renderer that uses the crate the way a renderer would: every surface
-//! holds a `lobe` model behind the `Bxdf` trait, and the integrators call only `eval`,
-//! `sample` and `pdf`. The architecture follows the handout (seed 003, "Ray tracer
-//! architecture 101"): [`ray::Ray`] with a valid `t` range; the [`surface::Surface`] trait,
-//! implemented by spheres, quads, triangle meshes (OBJ files through `tobj`) and
-//! [`bvh::Group`], which holds a BVH; an intersection record ([`surface::Hit`]); a
-//! [`material::Material`] holding the model; a pinhole [`camera::Camera`]. Lights are
-//! point, directional, spherical and quadrilateral area lights, and an environment
-//! (constant, a sky gradient, or its order-3 spherical-harmonic projection with `--env sh`;
-//! `--shading irradiance` lights diffuse models by its irradiance `E(n)`). Two integrators: [`path::PathTracer`] (next-event
-//! estimation, MIS, Russian roulette) and [`whitted::Whitted`]. A light-path filter in
-//! Heckbert's notation ([`heckbert`]) keeps only the paths asked for.
+//! A small but real renderer that uses the crate the way a renderer would: every surface holds a
+//! `lobe` model behind the `Bxdf` trait, and the path tracer calls only `eval`, `sample`, `pdf` and
+//! `lobes` (the Whitted integrator also takes a specular surface's Fresnel reflectance from
+//! `lobe::fresnel`). The architecture follows the handout (seed 003, "Ray tracer architecture
+//! 101"): [`ray::Ray`] with a valid `t` range; the [`surface::Surface`] trait, implemented by
+//! spheres, quads, triangle meshes (OBJ files through `tobj`) and [`bvh::Group`], which holds a
+//! BVH; an intersection record ([`surface::Hit`]); a [`material::Material`] holding the model; a
+//! pinhole [`camera::Camera`]. Lights are point, directional, spherical and quadrilateral area
+//! lights, and an environment (constant, a sky gradient, or its order-3 spherical-harmonic
+//! projection with `--env sh`; `--shading irradiance` lights diffuse models by its irradiance
+//! `E(n)`). Two integrators: [`path::PathTracer`] (next-event estimation, MIS, Russian roulette)
+//! and [`whitted::Whitted`]. A light-path filter in Heckbert's notation ([`heckbert`]) keeps only
+//! the paths asked for.
 //!
 //! `cargo run --release --example raytracer -- --help` lists the options. Under
 //! `cargo test` (the example has `test = true`) run the unit tests of every module, the

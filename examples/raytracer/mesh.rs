@@ -259,7 +259,7 @@ mod tests {
         assert_eq!(smooth_point(&v, &v, b, p, -1.0), p);
         assert_eq!(smooth_point(&v, &v, [1.0, 0.0, 0.0], v[0], 1.0), v[0]);
         // Through `intersect`: a ray from outside gets the lifted point, its shadow-ray
-        // origin, and the bend of the normals (35.3° from the facet's: sin = √(2/3)).
+        // origin, and the bend of the normals (54.7° from the facet's: sin = √(2/3)).
         let tri = Triangle {
             p: v,
             n: Some(v),

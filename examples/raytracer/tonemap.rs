@@ -3,7 +3,8 @@
 use lobe::Vec3;
 
 /// Narkowicz's fit of the ACES filmic tone curve (2015, "ACES Filmic Tone Mapping Curve"):
-/// maps `[0, ∞)` to `[0, 1)` per channel, with a gentle shoulder.
+/// maps `[0, ∞)` to `[0, 1]` per channel (clamped at 1, which it reaches near 7.24), with a
+/// gentle shoulder.
 #[inline]
 pub fn aces(x: Vec3) -> Vec3 {
     let x = x.max(Vec3::ZERO);

@@ -166,7 +166,7 @@ impl Ggx {
 
     /// The density of [`sample_visible_bounded`](Self::sample_visible_bounded) in solid angle
     /// of `m`: `D_w(m) (1 + wh.z) / (1 + b)` inside the bounded cap and `0` outside, where
-    /// `wh` is the stretched view and `b` the cap's lower end. For normals that reflect `w`
+    /// `wh` is the stretched view and `z ≥ −b` the cap. For normals that reflect `w`
     /// above the horizon it equals `2 (w·m) D(m) / (k wz + |(αx wx, αy wy, wz)|)` (Eto &
     /// Tokuyoshi 2023, eq. 7).
     #[must_use]

@@ -30,10 +30,10 @@ use glam::{Vec2, Vec3};
 /// 128-entry table over a map of `cot θ` that is logarithmic across the lobe's slopes,
 /// interpolated by a cubic. The table is part of the value (no allocation, about 0.5 KiB);
 /// construction costs up to about 24 000 evaluations of `D` (some 0.25 ms). Against `f64`
-/// references (`tests/microfacet_gtr.rs`: GGX's closed form at `γ = 2`, an adaptive
-/// quadrature of eq. 14 elsewhere) on a grid of `α ∈ [1e-4, 10]` and `γ ∈ [0.1, 10]`, the
-/// largest `|ΔG1|` is 2.5e-5 (at `γ = 1`, `α = 1e-4`, whose slopes span three decades), held
-/// below 3e-5; 1.3e-6 at `γ = 2`.
+/// references (`tests/microfacet_gtr.rs`: GGX's closed form at `γ = 2`, an adaptive quadrature of
+/// eq. 14 elsewhere) on a grid of `α ∈ [1e-4, 10]` and `γ ∈ [0.1, 10]`, the largest `|ΔG1|` is
+/// 2.5e-5 (at `γ = 1`, `α = 1e-4`, whose slopes span about three and a quarter decades), held below
+/// 3e-5; 1.3e-6 at `γ = 2`.
 ///
 /// Sampling: `D cos θ` by inverting its CDF in closed form, with `sin² θm` and `cos² θm` each
 /// from its own expression so that neither is a difference near its end: the sample's CDF is

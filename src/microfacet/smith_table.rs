@@ -13,11 +13,11 @@ const ENTRIES: usize = 128;
 /// The integral is reduced to one dimension by integrating `φm` in closed form, then
 /// evaluated by 8-point Gauss-Legendre quadrature (see [`projected_area`]). The table holds
 /// `G1` at 128 values of `p = v / (v + s)`, `v = asinh(cot θ / lo)`, `s = asinh(hi / lo)`,
-/// uniformly spaced in `p ∈ [0, 1]`, where `lo` and `hi` are the slopes `tan θm` below which
-/// 10% and 90% of `D cos θ` lie. `p` is linear in `cot θ` near grazing (where `G1` is), then
+/// uniformly spaced in `p ∈ [0, 1]`, where `lo` and `hi` are the slopes `tan θm` below which 10%
+/// and 90% of `D cos θ` lie. `p` is linear in `cot θ` near grazing (where `G1` is), then
 /// logarithmic across the lobe's slopes however many decades they span (GTR with `γ = 1` and
-/// `α = 1e-4` spans about three), then tends to 1 like `s / ln cot θ`, where `G1` is 1
-/// to within `(hi / cot θ)²`. Lookups interpolate by a Catmull-Rom cubic, with the values one
+/// `α = 1e-4` spans about three and a quarter), then tends to 1 like `s / ln cot θ`, where `G1` is
+/// 1 to within `(hi / cot θ)²`. Lookups interpolate by a Catmull-Rom cubic, with the values one
 /// node beyond each end extrapolated quadratically.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct SmithTable {

@@ -455,12 +455,13 @@ fn measure_direction<B: Bxdf + ?Sized>(
     }
     // The samples that drew nothing: one of the chi-square's cells when it expects enough, never
     // merged into another (merged into a direction bin, 390 failures against none expected passed
-    // with p = 0.0044; a small pool may be merged into it), and always tested alone: the Poisson
-    // chance of as many or more for the expectation raised by k of its own standard errors. The
-    // test's share of the significance, α, is halved between the raise (k = Φ⁻¹(1 − α/2): the
-    // estimate falls that far below the true expectation with probability α/2) and the Poisson tail
-    // (rejected below α/2), so that a correct model fails it with probability α at most. The
-    // direction's significance is shared with the chi-square (Šidák).
+    // with p = 0.0044), and always tested alone: the Poisson chance of as many or more for the
+    // expectation raised by k of its own standard errors. The test's share of the significance, α,
+    // is halved between the raise (k = Φ⁻¹(1 − α/2): the estimate falls that far below the true
+    // expectation with probability α/2) and the Poisson tail (rejected below α/2), so that a
+    // correct model fails it with probability α at most. The direction's significance is shared
+    // with the chi-square (Šidák). A small pool of bins may still be merged into this cell, when it
+    // is the smallest kept (below).
     let expected_missing = total * (1.0 - mass_total).max(0.0);
     if expected_missing >= MIN_EXPECTED {
         cells.push((missing as f64, expected_missing, total * total * mass_var));
