@@ -82,12 +82,12 @@ trait Checked: Batch<Spectrum: Buffers> + Bxdf<Spectrum = <Self as Prepare>::Spe
 
 impl<M: Batch<Spectrum: Buffers> + Bxdf<Spectrum = <M as Prepare>::Spectrum>> Checked for M {}
 
-/// Checks every lane of `m`'s batched calls against its scalar calls, bit for bit (the
-/// sample's lobe and `eta` too), and returns the lobes the scalar samples came from (so that a
-/// caller can ask that every branch of a sampler was compared). Where a lane's sample is not
-/// specular, its `(f, pdf)` must also be what `eval_batch` and `pdf_batch` give at the sampled
-/// direction (to `1e-3`: a sampler computes them by another route), so that a renderer can
-/// weigh it against a light sample; a specular lane's `pdf` is a lobe's probability instead,
+/// Checks every lane of `m`'s batched calls against its scalar calls, bit for bit (the sample's
+/// lobe and `eta` too), and returns the lobes the scalar samples came from (so that a caller can
+/// ask that every branch of a sampler was compared). Where a lane's sample is not specular, its
+/// `(f, pdf)` must also be what `eval_batch` and `pdf_batch` give at the sampled direction (to
+/// [`CONSISTENCY`], 1e-4 relative: a sampler computes them by another route), so that a renderer
+/// can weigh it against a light sample; a specular lane's `pdf` is a lobe's probability instead,
 /// which the lobe flag tells apart.
 fn check<M: Checked>(name: &str, m: &M) -> Vec<Lobes> {
     check_lanes(name, m, true)

@@ -195,7 +195,8 @@ fn values_match_an_independent_evaluation() {
 #[test]
 fn finite_at_the_normal_and_at_grazing() {
     for m in [eon(1.0, 1.0), eon(1.0, 1.0).with_exact_albedo()] {
-        // At the normal s = 0 and the compensation of μ = 1 is C1: f = A_F/π + multi C1².
+        // At the normal s = 0 and the compensation of μ = 1 is C1 (f = A_F/π + multi C1²):
+        // finite and positive.
         let f = m.eval(Vec3::Z, Vec3::Z);
         assert!(f.is_finite() && f > 0.0);
         assert_total_at_grazing("EON ρ=1 r=1", &m);

@@ -166,6 +166,12 @@ fn values_match_an_independent_evaluation() {
 fn finite_at_the_normal_and_at_grazing() {
     let m = qon(1.0, core::f32::consts::FRAC_PI_2);
     let (a, _) = m.coefficients();
+    // A = 1 − σ²/(2(σ² + 0.33)) (Oren & Nayar 1994), here in f64.
+    let s2 = (PI / 2.0) * (PI / 2.0);
+    assert!(
+        (f64::from(a) - (1.0 - 0.5 * s2 / (s2 + 0.33))).abs() < 1e-6,
+        "A = {a}"
+    );
     // Exactly at the normal the azimuthal term vanishes: f = ρA/π.
     assert_eq!(m.eval(Vec3::Z, Vec3::Z), a / core::f32::consts::PI);
     assert_eq!(m.eval(Vec3::Z, graze(1e-7, 0.0)), a / core::f32::consts::PI);

@@ -97,10 +97,10 @@ fn the_exact_smith_lambda_satisfies_the_projected_area_identity() {
     assert!(worst < 2e-5, "{worst}");
 }
 
-/// The exact masking's albedo stays below 1 up to the table's grazing end, where the
-/// energy-bound law's directions do not reach: 0.995 to 0.999 as `μo → 0` (the first entry,
-/// integrated at `μo = 1e-4`), as `Sheen`'s docs say; the fit's passes 1 there for a smooth
-/// sheen (1.90 at `r = 0.01`).
+/// The exact masking's albedo stays below 1 up to the table's grazing end, where the energy-bound
+/// law's directions do not reach: 0.995 to 0.999 as `μo → 0` (the first entry, integrated at
+/// `μo = 1e-4`), as `Sheen`'s docs say (printed; held between 0.99 and 1); the fit's passes 1 there
+/// for a smooth sheen (1.90 at `r = 0.01`).
 #[test]
 fn the_exact_smith_albedo_stays_below_one_to_grazing() {
     for r in [0.01_f32, 0.03, 0.1, 0.5, 1.0] {

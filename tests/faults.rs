@@ -1146,7 +1146,13 @@ fn walk_without_the_base_cosine_fails_the_estimators() {
         "albedo at normal incidence: {} (correct {})",
         buggy.sampled, correct.sampled
     );
-    assert!(buggy.sampled.mean > correct.sampled.mean + 0.1);
+    // The bug gains more than 0.1, by more than k standard errors of the difference.
+    let (b, c) = (&buggy.sampled, &correct.sampled);
+    let k = common::k_sigma(0.01, 1);
+    assert!(
+        b.mean - c.mean - 0.1 > k * b.std_err.hypot(c.std_err),
+        "{b} vs {c}"
+    );
     assert!(figure(&report, Law::Consistency) > 5.0);
 }
 

@@ -7,7 +7,7 @@ use lobe::frame::{reflect_about, reflect_away, refract_away};
 use lobe::{Eta, Frame, Vec3};
 use proptest::prelude::*;
 
-/// Unit directions: uniform on the sphere, plus the poles and points within 1e-7 of them.
+/// Unit directions: uniform on the sphere, plus the poles and points within 1e-6 of them.
 fn unit_vector() -> impl Strategy<Value = Vec3> {
     let uniform = (-1.0f32..=1.0, 0.0f32..core::f32::consts::TAU).prop_map(|(z, phi)| {
         let r = (1.0 - z * z).max(0.0).sqrt();

@@ -334,7 +334,8 @@ fn blinn_phong_exact_smith_matches_the_f64_reference() {
         let d = BlinnPhongNdf::new(Alpha::new(alpha).unwrap())
             .unwrap()
             .with_exact_smith();
-        let p = f64::from(d.exponent());
+        // p = 2/α² − 2, the exponent of `D = (n·h)^p (p + 2)/(2π)`, in f64, not the type's own.
+        let p = 2.0 / (f64::from(alpha) * f64::from(alpha)) - 2.0;
         // cos^p θ from sin² θ, which keeps its digits next to the normal where the lobe is.
         // (p = 0 at α = 1: the uniform D, whose 0 · ln 0 would be NaN.)
         let dd = move |_cos2: f64, sin2: f64| {

@@ -67,7 +67,10 @@ proptest! {
         let (lo, li) = (d.lambda(wo), d.lambda(wi));
         let (go, gi) = (d.g1(wo), d.g1(wi));
         prop_assert!(lo >= 0.0 && li >= 0.0, "Λ < 0: {lo}, {li}");
-        // G1 = 1/(1 + Λ), whichever of the two a type computes directly.
+        // G1 = 1/(1 + Λ), whichever of the two a type computes directly. For GGX these are two
+        // closed forms; the tabulated types (GTR, Blinn-Phong with exact Smith) and Beckmann's
+        // exact masking derive one from the other, so for them this checks that the two stay
+        // consistent (their accuracy: `microfacet_gtr.rs`, `microfacet_reference.rs`).
         prop_assert!(close(go, 1.0 / (1.0 + lo), 1e-5), "G1 {go} vs 1/(1+Λ) {}", 1.0 / (1.0 + lo));
         // Λ depends on tan² θ and φ only: the same below the surface and for −w mirrored
         // in the normal plane.
@@ -226,7 +229,8 @@ fn reflected_samples_at_short_normals_reflect_about_the_normalised_one() {
     }
 }
 
-/// Walter's rational `G1` exceeds 1 by at most 6.1e-5 (just below `a = 1.6`), as its docs say.
+/// Walter's rational `G1` exceeds 1 by at most 6.2e-5 (measured 6.1e-5, just below `a = 1.6`),
+/// as its docs say.
 #[test]
 fn rational_g1_overshoot_is_bounded() {
     let b =
@@ -288,7 +292,10 @@ fn blinn_phong_approaches_beckmann_for_narrow_lobes() {
         }
         l1 *= std::f64::consts::TAU * std::f64::consts::FRAC_PI_2 / n as f64;
         eprintln!("α = {alpha}: ∫ |D_BlinnPhong − D_Beckmann| cos θ dω = {l1:.4}");
-        assert!(l1 >= previous * 0.9, "the distance should grow with α");
+        assert!(
+            l1 > previous,
+            "the distance should grow with α: {l1} after {previous}"
+        );
         if alpha <= 0.1 {
             assert!(l1 < 0.02, "α = {alpha}: L1 distance {l1}");
         }

@@ -1,5 +1,5 @@
 //! `verify::Pcg32` through `rand_core`'s traits: it feeds `rand`, and its sequence is still
-//! the one `src/verify/rng.rs` pins.
+//! the one `src/verify/stats/rng.rs` pins.
 //!
 //! The expected outputs are the pinned values of the generator's own tests (computed there
 //! with an independent Python transcription of O'Neill's algorithm; the first also matches

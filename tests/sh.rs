@@ -7,7 +7,10 @@
 //! Expected values never come from the code under test: they are closed forms derived here
 //! (in comments), published constants (Ramamoorthi & Hanrahan 2001), or a second method (a
 //! quadrature written in this file, in `f64`, with Abramowitz & Stegun's tabulated
-//! Gauss–Legendre nodes; Monte Carlo with standard errors).
+//! Gauss–Legendre nodes; Monte Carlo with standard errors). Some tests also check that two of
+//! the crate's own paths agree (Monte Carlo against `Sh::project_with`, `Zonal::rotated`
+//! against `Sh::project`, the rotation paths, `Transfer::project` against its Monte Carlo, the
+//! irradiance's three forms): consistency checks, anchored by the independent ones above.
 //!
 //! `cargo test --test sh -- --nocapture` prints every measured figure.
 

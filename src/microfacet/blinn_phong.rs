@@ -29,7 +29,7 @@ pub(crate) const BLINN_PHONG_ALPHA: &str = "[0.0001, 1] (Blinn-Phong)";
 /// holds for narrow lobes only; the tests measure how far it is from conserving this
 /// distribution's projected area (`max |∫ G1 ⟨wo, m⟩ D dm / cos θo − 1|` over θo up to 89°):
 /// within the Monte Carlo error (±0.2%) for `α ≤ 0.1`, 9.9% at `α = 0.5`, 75% at `α = 1` (held
-/// below 0.5%, 12% and 80%).
+/// below 0.5%, 12% and 80% plus k standard errors).
 /// Likewise `D` itself: the L1 distance `∫ |D − D_Beckmann| cos θ dω` is 1e-4 at `α = 0.01`,
 /// 0.005 at 0.1, 0.12 at 0.5 and 0.41 at 1. [`BlinnPhongNdf::with_exact_smith`] switches to
 /// this distribution's own Smith `G1`, tabulated like [`Gtr`](super::Gtr)'s, which conserves

@@ -126,6 +126,7 @@ pub fn assert_edge_samples<B: Bxdf<Spectrum = f32> + ?Sized>(
     viewers: &[Vec3],
 ) {
     let edges = [0.0_f32, 1e-7, 0.5, 1.0 - 6e-8];
+    let mut drawn = 0;
     for &wo in viewers {
         for &x in &edges {
             for &y in &edges {
@@ -135,11 +136,16 @@ pub fn assert_edge_samples<B: Bxdf<Spectrum = f32> + ?Sized>(
                         assert!(s.f.is_finite() && s.f >= 0.0, "{name}: {s:?}");
                         assert!(s.pdf.is_finite() && s.pdf > 0.0, "{name}: {s:?}");
                         assert!(s.weight().is_finite(), "{name}: {s:?}");
+                        drawn += 1;
                     }
                 }
             }
         }
     }
+    assert!(
+        drawn > 0,
+        "{name}: no sample drawn at the edges: nothing was checked"
+    );
 }
 
 /// **Values** against an independent computation: for each `(wo, wi, f, pdf)` (directions
