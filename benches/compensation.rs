@@ -53,7 +53,7 @@ fn eval_pass<B: Bxdf>(bxdf: &B, wo: &[Vec3], wi: &[Vec3]) {
     }
 }
 
-/// `eval`, `pdf` and `sample` of `base` and `compensated`, in the order A B A B.
+/// `eval` of `base` and `compensated` in the order A B A B, then `pdf` and `sample` of each once.
 fn pair<A: Bxdf, B: Bxdf>(c: &mut Criterion, name: &str, base: &A, compensated: &B) {
     let (wo, wi, u, uc) = inputs(base.lobes().is_transmissive());
     for round in ["", " (again)"] {

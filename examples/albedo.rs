@@ -1,5 +1,5 @@
-//! Directional albedo `E(θo) = ∫ f(wo, wi) |cos θi| dωi` of white models with a density (the
-//! panels below list them), against the viewing angle θo from 0° to 89°.
+//! Directional albedo `E(θo) = ∫ f(wo, wi) |cos θi| dωi` of white models (the panels below list
+//! them), against the viewing angle θo from 0° to 89°.
 //!
 //! Every model is white (ρ = 1, `k_s = 1`, or `F = 1` through
 //! [`NoFresnel`](lobe::fresnel::NoFresnel)), so an energy-conserving model that loses nothing

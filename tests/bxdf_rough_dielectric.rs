@@ -120,7 +120,8 @@ fn importance_albedo_is_nearly_one_for_smooth_glass() {
             (format!("α = {alpha}"), albedo)
         })
         .collect();
-    let k = common::k_sigma(0.01, 2);
+    // One bound and two falls.
+    let k = common::k_sigma(0.01, 3);
     let smooth = &albedos[0].1;
     assert!(smooth.mean - k * smooth.std_err > 0.99, "{smooth}");
     common::assert_falling("the albedo", &albedos, k);

@@ -99,7 +99,7 @@ OPTIONS:
                        an ambient term, and recursive mirror reflection and refraction
     --max-depth N      the most bounces on a path, or the Whitted recursion depth
                        (default 12)
-    --scene NAME       default: a sphere for each of 19 models, floor, area light, sky;
+    --scene NAME       default: 19 spheres of lobe materials, floor, area light, sky;
                        furnace: lossless white spheres in a uniform environment (they
                        should vanish); lights: an OBJ mesh under point, directional and
                        spherical lights; ggx-row, ggx-row-compensated: GGX spheres

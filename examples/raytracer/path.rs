@@ -274,7 +274,7 @@ mod tests {
         );
     }
 
-    /// The default scene (19 models, glass included), 32 × 18 at 8 spp.
+    /// The default scene (19 materials, glass included), 32 × 18 at 8 spp.
     fn default_scene(clamp: Option<f32>, filter: Option<&str>) -> Vec<Vec3> {
         let (scene, _) = SceneChoice::Default.build(16.0 / 9.0).unwrap();
         let integrator = Integrator::Path(PathTracer {

@@ -1,4 +1,4 @@
-//! The default scene: one sphere for each of 19 models in a grid of five columns and four rows (the
+//! The default scene: 19 spheres, one per material, in a grid of five columns and four rows (the
 //! nearest row has four) on a checkered floor, lit by a quad area light and a sky.
 
 use crate::camera::Camera;
@@ -222,8 +222,8 @@ fn checkered_floor(b: &mut SceneBuilder) -> Result<(), ParamError> {
 /// The layout as a Markdown table, for the README.
 pub fn layout_markdown(layout: &[Vec<String>]) -> String {
     let mut s = String::from(
-        "# The default scene\n\n`cargo run --release --example raytracer` renders one sphere for \
-         each of 19 `lobe` models in a grid of five columns and four rows (the nearest row has \
+        "# The default scene\n\n`cargo run --release --example raytracer` renders 19 spheres, one \
+         per `lobe` material, in a grid of five columns and four rows (the nearest row has \
          four) on a checkered floor, lit by a quad area light (upper left) and a sky. As seen in \
          `render.png`:\n\n\
          | row | 1 (left) | 2 | 3 | 4 | 5 (right) |\n\
