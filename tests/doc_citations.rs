@@ -285,6 +285,57 @@ fn links_within_and_into_the_pages_name_existing_headings() {
     assert!(bad.is_empty(), "{bad:#?}");
 }
 
+/// The README and the pages under `docs/` link to each other's headings and to their own; every
+/// such link names a heading that exists, so that a section moved from one to another leaves no
+/// link behind that points at nothing. A page spells a link to itself `(#…`, the README a link
+/// to a page `docs/page.md#…`, and a page under `docs/` a link to another `page.md#…` and to the
+/// README `../README.md#…`.
+#[test]
+fn links_between_the_readme_and_the_docs_pages_name_existing_headings() {
+    let mut pages = vec![("README.md".to_string(), read(&root().join("README.md")))];
+    let mut docs: Vec<PathBuf> = fs::read_dir(root().join("docs"))
+        .expect("docs/")
+        .map(|entry| entry.unwrap().path())
+        .filter(|path| path.extension().is_some_and(|x| x == "md"))
+        .collect();
+    docs.sort();
+    for path in docs {
+        let name = format!("docs/{}", path.file_name().unwrap().to_string_lossy());
+        pages.push((name, read(&path)));
+    }
+    let page_ids: Vec<BTreeSet<String>> = pages.iter().map(|(n, text)| ids(n, text)).collect();
+    let mut bad = Vec::new();
+    let mut checked = 0;
+    for (origin, text) in &pages {
+        for ((target, _), target_ids) in pages.iter().zip(&page_ids) {
+            let prefix = if target == origin {
+                "(".to_string()
+            } else if origin.starts_with("docs/") {
+                match target.strip_prefix("docs/") {
+                    Some(page) => format!("({page}"),
+                    None => format!("(../{target}"),
+                }
+            } else {
+                format!("({target}")
+            };
+            for fragment in fragments(text, &prefix) {
+                checked += 1;
+                if !target_ids.contains(fragment) {
+                    bad.push(format!(
+                        "{origin}: the link {prefix}#{fragment}) names no heading of {target}"
+                    ));
+                }
+            }
+        }
+    }
+    eprintln!("links between the README and docs/ checked: {checked}");
+    assert!(bad.is_empty(), "{bad:#?}");
+    assert!(
+        checked >= 10,
+        "only {checked} links found: is the scan broken?"
+    );
+}
+
 /// Each entry of the errata page (a `###` heading) has a "Pinned by" part, and every file and
 /// function it names in backticks exists, the function in the file named before it
 /// (`` `tests/fresnel.rs`, `slipped_schlick_is_caught…` ``, `` `src/fresnel.rs`,

@@ -26,15 +26,15 @@ per-round ratios.
 
 Stores: Dr.Jit (1.5) marks its kernels' loads and stores `!nontemporal`; a streaming store
 writes an output line without reading it first, an ordinary store (lobe's) reads it for
-ownership. Past the L2 (2^20 lanes) that makes lobe's memory pass about 1.2-1.4x Mitsuba's;
-the model calls hide it behind their arithmetic, and in a batch that stays in the L2 the
-streaming store is the slower one (README, the memory-pass paragraph). The script reads the
-IR of an `a + b` kernel, the memory pass's form, and prints which kind of store it has, so
-the README's explanation of the memory-pass row is checked again in every run.
+ownership. Past the L2 (2^20 lanes) that makes lobe's memory pass about 1.2-1.4x Mitsuba's; the
+model calls hide it behind their arithmetic, and in a batch that stays in the L2 the streaming
+store is the slower one (docs/benchmarks.md, the memory-pass paragraph). The script reads the IR
+of an `a + b` kernel, the memory pass's form, and prints which kind of store it has, so
+docs/benchmarks.md's explanation of the memory-pass row is checked again in every run.
 
-Cost per call: after the table the script times Mitsuba's calls on 16 lanes, where the cost
-of a call (tracing, finding the kernel, launching it) is nearly all of it; that cost is what
-makes Mitsuba slower per lane at small batches (README, the batch-size table).
+Cost per call: after the table the script times Mitsuba's calls on 16 lanes, where the cost of a
+call (tracing, finding the kernel, launching it) is nearly all of it; that cost is what makes
+Mitsuba slower per lane at small batches (docs/benchmarks.md, the batch-size table).
 """
 
 import json
