@@ -53,112 +53,113 @@
 //! under AVX2, `cargo bench --bench batched -- --lanes 16`, the `eval` of Oren-Nayar, EON, Disney
 //! diffuse and the diffuse transmitter at 0.33–0.62× and `Lambert`'s, mostly the call's fixed cost,
 //! at about 1×, `docs/batched-loops.md`, rule 10; under AVX2 a call of fewer than 8 lanes fills no
-//! vector, and at 4 lanes the calls timed in `docs/benchmarks.md` run at 1.1–3.9× of the scalar
-//! calls: call those), the per-lane code is inlined, its early returns become selects, and what the
-//! loop would branch on per call (a microfacet model's masking term) is fixed outside it. Each loop
-//! runs on its own copy of the model (a clone per batched call, hence [`Batch`]'s `Clone` bound),
-//! whose parameters the compiler then keeps in registers: read through the caller's reference, a
-//! parameter that only some lanes reach (behind a lane's early return) was vectorised as a masked
-//! gather from one address, every iteration — ten of them in the GGX gold conductor's `eval` loop,
-//! a quarter of its time. The hot models' lane code has no library calls (sine and cosine are
-//! [`crate::math::sin_cos_turns`]); a lane that calls one (Beckmann's `erfc`, Phong's `powf`) still
-//! runs, one lane at a time. The microfacet models (plain and energy-compensated, reflecting and
-//! refracting) have one loop per masking term, and the energy-compensated microfacet model one per
-//! masking term and compensation (with the choice between Kulla & Conty's lobe and Turquin's
-//! scaling inside the loop, LLVM weighed both samplers in every lane). That model's loops, both
-//! plastics' and the compensated glass's take 256 lanes at a time: a pass looks the albedo table up
-//! at each lane's `wo` (and `wi`), the [`AlbedoRow`](crate::tables::AlbedoRow) lookup split into
-//! the positions, which vectorise, and the reads (the compensated plastic looks up two tables, its
-//! coat albedo and the coat's own; the glass both sides' rows, then keeps each lane's side with a
-//! select); then the model's arithmetic runs in a loop that reads no table; `sample` then looks the
-//! tables up at the sampled directions and adds what needs them (the compensation lobe's value, the
-//! plastic's diffuse term) in a last pass. Each pass takes the chunk's slices one to an argument,
-//! as the plain loops do. The chunk's buffers are on the stack (up to 14 KiB, for a `Vec4`
-//! compensated plastic's `sample`), zeroed on each call: a call of at most 64 lanes takes buffers
-//! of 64 lanes, so that it does not pay for a long chunk's (at 16 lanes a call these models run at
-//! 0.28–0.44× of the scalar calls, AVX2). A microfacet model's loops, and the energy-compensated
-//! microfacet model's, take the Fresnel term channel by channel
-//! ([`Fresnel::eval_per_channel`](crate::fresnel::Fresnel::eval_per_channel)): the exact
-//! conductor's scalar `eval` puts an RGB spectrum's channels side by side in one SIMD register,
-//! which a loop cannot widen across calls (the same numbers either way). The other loops run that
-//! scalar form, one call per lane. A model whose `sample` picks one of two lobes per lane branches
-//! between them; the energy-compensated microfacet model's batched `sample` instead draws both
-//! lobes' directions in every lane and keeps the one the lane picks, which vectorises for GGX (the
-//! same numbers: each lobe's value and density come from the same arithmetic; Beckmann's sampler, a
-//! Newton iteration, runs one lane at a time and leaves that model's batched `sample` at about the
-//! scalar speed either way); so do both plastics' (the plastic's diffuse lobe and the compensated
-//! coat's compensation lobe draw the same cosine-weighted direction, so a lane forms two directions
-//! and evaluates the coat once). The plastics' loops call the coat with its masking term (and the
-//! compensated coat's compensation) fixed, as the microfacet models' loops do (read per lane, the
-//! term kept the loop from vectorising). The compensated glass's batched `sample` forms the
-//! compensation lobes' direction and the interface's in every lane and evaluates the interface
-//! once, at the one the lane picks; an index-matched interface's delta sample (the same for every
-//! lane) is chosen by a select, not a branch: that branch, and a short-circuit `||` in the glass's
-//! prepared state, had kept its `sample` and `pdf` loops scalar under AVX2 (LLVM's loop-vectoriser
-//! remarks, `-C llvm-args=-pass-remarks-missed=loop-vectorize`, name the loops it leaves and why).
+//! vector, and at 4 lanes the calls timed in the repository's `docs/benchmarks.md` run at 1.1–3.9×
+//! of the scalar calls: call those), the per-lane code is inlined, its early returns become
+//! selects, and what the loop would branch on per call (a microfacet model's masking term) is fixed
+//! outside it. Each loop runs on its own copy of the model (a clone per batched call, hence
+//! [`Batch`]'s `Clone` bound), whose parameters the compiler then keeps in registers: read through
+//! the caller's reference, a parameter that only some lanes reach (behind a lane's early return)
+//! was vectorised as a masked gather from one address, every iteration — ten of them in the GGX
+//! gold conductor's `eval` loop, a quarter of its time. The hot models' lane code has no library
+//! calls (sine and cosine are [`crate::math::sin_cos_turns`]); a lane that calls one (Beckmann's
+//! `erfc`, Phong's `powf`) still runs, one lane at a time. The microfacet models (plain and
+//! energy-compensated, reflecting and refracting) have one loop per masking term, and the
+//! energy-compensated microfacet model one per masking term and compensation (with the choice
+//! between Kulla & Conty's lobe and Turquin's scaling inside the loop, LLVM weighed both samplers
+//! in every lane). That model's loops, both plastics' and the compensated glass's take 256 lanes at
+//! a time: a pass looks the albedo table up at each lane's `wo` (and `wi`), the
+//! [`AlbedoRow`](crate::tables::AlbedoRow) lookup split into the positions, which vectorise, and
+//! the reads (the compensated plastic looks up two tables, its coat albedo and the coat's own; the
+//! glass both sides' rows, then keeps each lane's side with a select); then the model's arithmetic
+//! runs in a loop that reads no table; `sample` then looks the tables up at the sampled directions
+//! and adds what needs them (the compensation lobe's value, the plastic's diffuse term) in a last
+//! pass. Each pass takes the chunk's slices one to an argument, as the plain loops do. The chunk's
+//! buffers are on the stack (up to 14 KiB, for a `Vec4` compensated plastic's `sample`), zeroed on
+//! each call: a call of at most 64 lanes takes buffers of 64 lanes, so that it does not pay for a
+//! long chunk's (at 16 lanes a call these models run at 0.28–0.44× of the scalar calls, AVX2). A
+//! microfacet model's loops, and the energy-compensated microfacet model's, take the Fresnel term
+//! channel by channel ([`Fresnel::eval_per_channel`](crate::fresnel::Fresnel::eval_per_channel)):
+//! the exact conductor's scalar `eval` puts an RGB spectrum's channels side by side in one SIMD
+//! register, which a loop cannot widen across calls (the same numbers either way). The other loops
+//! run that scalar form, one call per lane. A model whose `sample` picks one of two lobes per lane
+//! branches between them; the energy-compensated microfacet model's batched `sample` instead draws
+//! both lobes' directions in every lane and keeps the one the lane picks, which vectorises for GGX
+//! (the same numbers: each lobe's value and density come from the same arithmetic; Beckmann's
+//! sampler, a Newton iteration, runs one lane at a time and leaves that model's batched `sample` at
+//! about the scalar speed either way); so do both plastics' (the plastic's diffuse lobe and the
+//! compensated coat's compensation lobe draw the same cosine-weighted direction, so a lane forms
+//! two directions and evaluates the coat once). The plastics' loops call the coat with its masking
+//! term (and the compensated coat's compensation) fixed, as the microfacet models' loops do (read
+//! per lane, the term kept the loop from vectorising). The compensated glass's batched `sample`
+//! forms the compensation lobes' direction and the interface's in every lane and evaluates the
+//! interface once, at the one the lane picks; an index-matched interface's delta sample (the same
+//! for every lane) is chosen by a select, not a branch: that branch, and a short-circuit `||` in
+//! the glass's prepared state, had kept its `sample` and `pdf` loops scalar under AVX2 (LLVM's
+//! loop-vectoriser remarks, `-C llvm-args=-pass-remarks-missed=loop-vectorize`, name the loops it
+//! leaves and why).
 //!
 //! **Under AVX2 without AVX-512** LLVM's cost model weighs a gather, an `f64` operation and a
 //! branch that a loop must turn into selects more heavily than under AVX-512, and some loops stay
-//! scalar there, or nearly (measured on an AMD EPYC with AVX2 and FMA only, 2026-11-29;
-//! `docs/benchmarks.md` has the run, under "Against other implementations"). The energy-compensated
-//! microfacet model's loops, both plastics' and the compensated glass's stayed scalar until they
-//! looked their tables up in passes of their own (above), and their `sample` evaluated the drawn
-//! lobe without early returns and finished its lanes without a branch: `cargo bench -p lobe-peers`,
-//! old and new builds interleaved over three rounds, 4,096 lanes, the batched calls went to 0.20×
-//! (`eval`), 0.23× (`pdf`) and 0.21× (`sample`) of the old for the compensated gold conductor,
-//! 0.19×, 0.64× and 0.30× for the plastic (whose `pdf` loop was already vectorised) and 0.25×,
-//! 0.20× and 0.30× for the compensated plastic (a probe, five rounds, had the compensated Schlick
-//! conductor's at 0.64×, 0.33× and 0.43×); the compensated glass's, once its lanes lost their last
-//! branches (above), 0.38×, 0.27× and 0.37× (the same bench, three rounds). The rough dielectric's
-//! `eval` and `sample` stayed scalar there too until their batched loops took forms without early
-//! returns: every lane forms both directions, the configuration and the value, and an unusable lane
-//! discards them (the same numbers). With its `f64` half vector (for refraction `wo + η' wi`
-//! cancels), the branches had tipped the balance. AVX-512 vectorised all of them before the table
-//! passes; the passes are not measured there. Three more ran slower batched than scalar under AVX2
-//! (0.6–0.7×, `docs/benchmarks.md` has the figures): EON, whose albedo's form (exact or fitted) its
-//! lanes read (now fixed outside the loop, as the masking terms are), and the smooth glass and the
-//! glazed model, whose `sample` a loop called once per lane (now inlined always; the glazed model's
-//! also without branches). The diffuse transmitter's `sample` vectorised under AVX-512 but not
-//! under AVX2 (LLVM's cost model judged eight lanes not worth it) until it lost its early return
-//! for a tangent `wo`, which its density refuses anyway, and its side was chosen by a select.
+//! scalar there, or nearly (measured on an AMD EPYC with AVX2 and FMA only, 2026-11-29; the
+//! repository's `docs/benchmarks.md` has the run, under "Against other implementations"). The
+//! energy-compensated microfacet model's loops, both plastics' and the compensated glass's stayed
+//! scalar until they looked their tables up in passes of their own (above), and their `sample`
+//! evaluated the drawn lobe without early returns and finished its lanes without a branch:
+//! `cargo bench -p lobe-peers`, old and new builds interleaved over three rounds, 4,096 lanes, the
+//! batched calls went to 0.20× (`eval`), 0.23× (`pdf`) and 0.21× (`sample`) of the old for the
+//! compensated gold conductor, 0.19×, 0.64× and 0.30× for the plastic (whose `pdf` loop was already
+//! vectorised) and 0.25×, 0.20× and 0.30× for the compensated plastic (a probe, five rounds, had
+//! the compensated Schlick conductor's at 0.64×, 0.33× and 0.43×); the compensated glass's, once
+//! its lanes lost their last branches (above), 0.38×, 0.27× and 0.37× (the same bench, three
+//! rounds). The rough dielectric's `eval` and `sample` stayed scalar there too until their batched
+//! loops took forms without early returns: every lane forms both directions, the configuration and
+//! the value, and an unusable lane discards them (the same numbers). With its `f64` half vector
+//! (for refraction `wo + η' wi` cancels), the branches had tipped the balance. AVX-512 vectorised
+//! all of them before the table passes; the passes are not measured there. Three more ran slower
+//! batched than scalar under AVX2 (0.6–0.7×, the repository's `docs/benchmarks.md` has the
+//! figures): EON, whose albedo's form (exact or fitted) its lanes read (now fixed outside the loop,
+//! as the masking terms are), and the smooth glass and the glazed model, whose `sample` a loop
+//! called once per lane (now inlined always; the glazed model's also without branches). The diffuse
+//! transmitter's `sample` vectorised under AVX-512 but not under AVX2 (LLVM's cost model judged
+//! eight lanes not worth it) until it lost its early return for a tangent `wo`, which its density
+//! refuses anyway, and its side was chosen by a select.
 //!
-//! **Models built from others.** [`Mix`](crate::bxdf::Mix),
-//! [`TwoSided`](crate::bxdf::TwoSided) and [`Mono`](crate::bxdf::Mono) pass a chunk of lanes at
-//! a time to their parts' own batched calls, with the parts' inputs and outputs in stack space,
-//! so that each part runs the loop written for it: a microfacet part's loop has its masking term
-//! fixed, a compensated part's looks its tables up in passes. Their parts must therefore
-//! implement [`Batch`] themselves (every model of the crate does; a model of your own gets it
-//! from `impl Batch for MyModel {}`). Inlined into one loop of the whole blend, a microfacet
-//! part's choice of masking term stayed inside the loop, which stayed scalar: the batched
-//! `Mix(Lambert, GGX gold)` `eval` cost what the scalar calls did. A blend's `sample` gathers
-//! the lanes whose `uc` chose each part, has that part sample them and the other part evaluate
-//! its value and density at the sampled directions (which blend with the sampled part's, as in
-//! the scalar call), and scatters the results back: the scalar calls' work, one part's sample
-//! and the other's evaluation per lane. A blend with a stochastic part (a layered model)
-//! samples through the provided loop: its sample carries the chosen part's random-walk
-//! estimates, not `eval`'s and `pdf`'s. Stack space, per call: 21 KiB for a blend's `sample`
-//! (256 lanes; each level of a nested blend adds its own), 8 KiB for its `eval` (256 lanes of
-//! values of up to four channels) and `pdf` (1,024 lanes), 8 KiB for `TwoSided` (the mirrored
-//! `z` of 1,024 lanes of `wo` and `wi`), 4 KiB for `Mono` (1,024 values). A call of at most 64
-//! lanes takes space for 64: the space is zeroed on every call, and the long chunks' space
-//! cost a short call more than its parts did (`TwoSided(GGX gold)`'s `pdf` at 16 lanes a call
-//! spent more than half its time in `memset`). Each part's call has a fixed cost (its loop's
-//! set-up, a remainder that runs outside the vector loop) that these chunk lengths keep to a
-//! few percent. `cargo bench --bench batched` times every model's batched calls against its scalar
-//! calls; `docs/benchmarks.md` has a run. The rules these loops follow, and how to find why one
-//! stays scalar, are in the repository's `docs/batched-loops.md`.
+//! **Models built from others.** [`Mix`](crate::bxdf::Mix), [`TwoSided`](crate::bxdf::TwoSided) and
+//! [`Mono`](crate::bxdf::Mono) pass a chunk of lanes at a time to their parts' own batched calls,
+//! with the parts' inputs and outputs in stack space, so that each part runs the loop written for
+//! it: a microfacet part's loop has its masking term fixed, a compensated part's looks its tables
+//! up in passes. Their parts must therefore implement [`Batch`] themselves (every model of the
+//! crate does; a model of your own gets it from `impl Batch for MyModel {}`). Inlined into one loop
+//! of the whole blend, a microfacet part's choice of masking term stayed inside the loop, which
+//! stayed scalar: the batched `Mix(Lambert, GGX gold)` `eval` cost what the scalar calls did. A
+//! blend's `sample` gathers the lanes whose `uc` chose each part, has that part sample them and the
+//! other part evaluate its value and density at the sampled directions (which blend with the
+//! sampled part's, as in the scalar call), and scatters the results back: the scalar calls' work,
+//! one part's sample and the other's evaluation per lane. A blend with a stochastic part (a layered
+//! model) samples through the provided loop: its sample carries the chosen part's random-walk
+//! estimates, not `eval`'s and `pdf`'s. Stack space, per call: 21 KiB for a blend's `sample` (256
+//! lanes; each level of a nested blend adds its own), 8 KiB for its `eval` (256 lanes of values of
+//! up to four channels) and `pdf` (1,024 lanes), 8 KiB for `TwoSided` (the mirrored `z` of 1,024
+//! lanes of `wo` and `wi`), 4 KiB for `Mono` (1,024 values). A call of at most 64 lanes takes space
+//! for 64: the space is zeroed on every call, and the long chunks' space cost a short call more
+//! than its parts did (`TwoSided(GGX gold)`'s `pdf` at 16 lanes a call spent more than half its
+//! time in `memset`). Each part's call has a fixed cost (its loop's set-up, a remainder that runs
+//! outside the vector loop) that these chunk lengths keep to a few percent.
+//! `cargo bench --bench batched` times every model's batched calls against its scalar calls; the
+//! repository's `docs/benchmarks.md` has a run. The rules these loops follow, and how to find why
+//! one stays scalar, are in the repository's `docs/batched-loops.md`.
 //!
-//! **Batch size.** Keep a batch within the L2 cache: an RGB `eval`'s slices take 36 bytes per
-//! lane, so 2¹⁵ lanes are 1.1 MiB (the machine measured here has a 2 MiB L2). The outputs are
-//! written with ordinary stores, which read each cache line before writing it; past the L2 that
-//! doubles an output's memory traffic, and a model as light as a memory pass (`wo + wi`) waits
-//! on it: Lambert's batched `eval` costs 0.45–0.49 ns per lane over 4,096 and 2¹⁵ lanes and
-//! 0.90 over 2²⁰, the GGX Schlick conductor's 1.3 and 1.5, the GGX gold conductor's 4.9 and 5.1
-//! (its arithmetic hides the traffic; `batch-timing sizes` in `docs/benchmarks.md`). A streaming
+//! **Batch size.** Keep a batch within the L2 cache: an RGB `eval`'s slices take 36 bytes per lane,
+//! so 2¹⁵ lanes are 1.1 MiB (the machine measured here has a 2 MiB L2). The outputs are written
+//! with ordinary stores, which read each cache line before writing it; past the L2 that doubles an
+//! output's memory traffic, and a model as light as a memory pass (`wo + wi`) waits on it:
+//! Lambert's batched `eval` costs 0.45–0.49 ns per lane over 4,096 and 2¹⁵ lanes and 0.90 over 2²⁰,
+//! the GGX Schlick conductor's 1.3 and 1.5, the GGX gold conductor's 4.9 and 5.1 (its arithmetic
+//! hides the traffic; `batch-timing sizes` in the repository's `docs/benchmarks.md`). A streaming
 //! store would skip the read, but it needs `unsafe`, and within the L2 it made a memory pass 1.8×
 //! slower: it sends every line on to memory, where an ordinary store leaves it in the cache for the
-//! next stage (the comparison with Mitsuba 3 in `docs/benchmarks.md`, whose JIT streams its stores,
-//! has the figures).
+//! next stage (the comparison with Mitsuba 3 in the repository's `docs/benchmarks.md`, whose JIT
+//! streams its stores, has the figures).
 //!
 //! **Run-time dispatch.** The default `x86_64` target has only SSE2, and a library cannot
 //! ask its users for `-C target-cpu=native`. On x86 and x86_64 each batched call asks the

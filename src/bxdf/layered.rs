@@ -108,16 +108,17 @@ const TAG_SAMPLE: u64 = 0x7361_6d70;
 /// renderer averages it over the pixel like any other noise; the expectation is what the
 /// laws speak of.
 ///
-/// **Cost** (`benches/combinators.rs`, RGB, one walk; the run in `docs/benchmarks.md`): `eval`
-/// 0.48 µs, `pdf` 0.50 µs, `sample` 0.79 µs for the `CoatedDiffuse` above, 0.60, 0.66 and 1.04 µs
-/// for a `CoatedConductor` of gold (coat `α = 0.1`, gold `α = 0.3`); `eval` and `pdf` cost about
-/// `n` times as much with `n` walks (3.5× with four), `sample` less (2.5×), whose path is one walk
-/// whatever `n`. The delta chains cost a smooth coat (η 1.5) over `Mix(Mirror, Lambert)` 1.20×,
-/// 1.54× and 1.13× what its walks cost without them (0.15, 0.23 and 0.22 µs with them), over a
-/// mirror under a scattering layer 1.41×, 1.58× and 1.47× (`docs/benchmarks.md`, the combinators).
-/// A chain goes on with the probability `F` that the coat's underside reflects, whatever the path's
-/// weight: under a coat that reflects nearly everything from inside (η 1e3), a connection makes up
-/// to `max_depth / 2` round trips, and a walk costs up to `max_depth²/2` draws of the base.
+/// **Cost** (`benches/combinators.rs`, RGB, one walk; the run in the repository's
+/// `docs/benchmarks.md`): `eval` 0.48 µs, `pdf` 0.50 µs, `sample` 0.79 µs for the `CoatedDiffuse`
+/// above, 0.60, 0.66 and 1.04 µs for a `CoatedConductor` of gold (coat `α = 0.1`, gold `α = 0.3`);
+/// `eval` and `pdf` cost about `n` times as much with `n` walks (3.5× with four), `sample` less
+/// (2.5×), whose path is one walk whatever `n`. The delta chains cost a smooth coat (η 1.5) over
+/// `Mix(Mirror, Lambert)` 1.20×, 1.54× and 1.13× what its walks cost without them (0.15, 0.23 and
+/// 0.22 µs with them), over a mirror under a scattering layer 1.41×, 1.58× and 1.47× (the
+/// repository's `docs/benchmarks.md`, the combinators). A chain goes on with the probability `F`
+/// that the coat's underside reflects, whatever the path's weight: under a coat that reflects
+/// nearly everything from inside (η 1e3), a connection makes up to `max_depth / 2` round trips, and
+/// a walk costs up to `max_depth²/2` draws of the base.
 ///
 /// **Laws** (measured by `tests/bxdf_layered.rs` and `tests/layered_reference.rs`, in
 /// expectation: [`verify::check_bxdf`](crate::verify::check_bxdf) checks a

@@ -78,16 +78,16 @@ const FIT_1: [f32; 5] = [21.5473, 3.82987, 0.19823, -1.97760, -4.32054];
 /// `r = 0.067`, where the peak passes 1 (1.04 for `r = 0.06`; above). With the exact Smith
 /// masking, energy conserving at every `r` (measured at `r = 0.01` and `0.03`).
 ///
-/// **Cost.** Built by [`new_exact_smith`](Self::new_exact_smith), the exact masking costs
-/// its 129 projected-area integrals of construction more than `new`: 1.62–1.78 ms against
-/// 1.25–1.52 ms (three runs of `cargo bench --bench combinators -- "Sheen construction"`,
-/// 2026-11-30, on a slower machine than the figures above); `new(…)?.with_exact_smith()`,
-/// which integrates the albedo table a second time, 3.07–3.58 ms in the same runs. Each `Λ` is
-/// then two square roots, a cubic and a division, cheaper than the fit's powers, division and
-/// exponential: at `r = 0.5` `eval` 30.3 ns against 35.4 and `sample` 37.8 against 49.1 (medians of
-/// three runs of `cargo bench --bench combinators -- Sheen`, 2026-11-27; `docs/benchmarks.md` has
-/// their ranges).
-/// The option's field makes every `Sheen` 130 floats larger (about 690 bytes in all).
+/// **Cost.** Built by [`new_exact_smith`](Self::new_exact_smith), the exact masking costs its 129
+/// projected-area integrals of construction more than `new`: 1.62–1.78 ms against 1.25–1.52 ms
+/// (three runs of `cargo bench --bench combinators -- "Sheen construction"`, 2026-11-30, on a
+/// slower machine than the figures above); `new(…)?.with_exact_smith()`, which integrates the
+/// albedo table a second time, 3.07–3.58 ms in the same runs. Each `Λ` is then two square roots, a
+/// cubic and a division, cheaper than the fit's powers, division and exponential: at `r = 0.5`
+/// `eval` 30.3 ns against 35.4 and `sample` 37.8 against 49.1 (medians of three runs of
+/// `cargo bench --bench combinators -- Sheen`, 2026-11-27; the repository's `docs/benchmarks.md`
+/// has their ranges). The option's field makes every `Sheen` 130 floats larger (about 690 bytes in
+/// all).
 ///
 /// ```
 /// use lobe::bxdf::{Bxdf, Sheen};
