@@ -70,14 +70,9 @@ fn slug(heading: &str) -> String {
 /// A markdown page's headings, in order: `(level, text, id)`. Fenced code is skipped.
 fn headings(page: &str) -> Vec<(usize, String, String)> {
     let mut out = Vec::new();
-    let mut fenced = false;
-    for line in page.lines() {
-        if line.trim_start().starts_with("```") {
-            fenced = !fenced;
-            continue;
-        }
+    for line in outside_fences(page).lines() {
         let level = line.chars().take_while(|&c| c == '#').count();
-        if fenced || level == 0 || !line[level..].starts_with(' ') {
+        if level == 0 || !line[level..].starts_with(' ') {
             continue;
         }
         let text = line[level..].trim().to_string();
