@@ -151,24 +151,29 @@ impl Pages {
     }
 
     /// Checks the links of `text` (from `origin`) into the two pages: each target is a link
-    /// prefix (`crate::errata`, `src/errata.md`, or `(` for a page's links to its own
-    /// headings) with the ids its fragments must be among.
+    /// prefix (`crate::errata`, `src/errata.md`, or `](` for a page's links to its own
+    /// headings) with the ids its fragments must be among. Returns how many links it checked
+    /// for each target.
     fn check_links(
         &self,
         origin: &str,
         text: &str,
         targets: &[(&str, &BTreeSet<String>)],
         bad: &mut Vec<String>,
-    ) {
+    ) -> Vec<usize> {
+        let mut counts = Vec::new();
         for (prefix, ids) in targets {
-            for fragment in fragments(text, prefix) {
-                if !ids.contains(fragment) {
+            let found = fragments(text, prefix);
+            for fragment in &found {
+                if !ids.contains(*fragment) {
                     bad.push(format!(
                         "{origin}: the link {prefix}#{fragment} names no heading"
                     ));
                 }
             }
+            counts.push(found.len());
         }
+        counts
     }
 }
 
@@ -250,36 +255,54 @@ fn every_errata_citation_in_src_has_an_anchor_and_doc_comments_link_it() {
     assert!(linked > 0, "no linked citation found: is the scan broken?");
 }
 
+/// The errata and handouts pages' inline links (outside fenced code) to their own headings and
+/// to each other's, and the README's links into them, name headings that exist; each kind of
+/// link the pages have must be found, so that the scan cannot pass by finding nothing.
 #[test]
 fn links_within_and_into_the_pages_name_existing_headings() {
     let pages = Pages::load();
     let mut bad = Vec::new();
-    for (name, page, own) in [
+    // Links checked: to a page's own headings, from a page into the errata, from the README.
+    let (mut own, mut into_errata) = (0, 0);
+    for (name, page, own_ids) in [
         ("src/errata.md", &pages.errata, &pages.errata_ids),
         ("src/handouts.md", &pages.handouts, &pages.handouts_ids),
     ] {
-        pages.check_links(
+        let counts = pages.check_links(
             name,
-            page,
+            &outside_fences(page),
             &[
-                ("(", own),
+                ("](", own_ids),
                 ("crate::errata", &pages.errata_ids),
                 ("crate::handouts", &pages.handouts_ids),
             ],
             &mut bad,
         );
+        own += counts[0];
+        into_errata += counts[1];
     }
-    let readme = read(&root().join("README.md"));
-    pages.check_links(
-        "README.md",
-        &readme,
-        &[
-            ("src/errata.md", &pages.errata_ids),
-            ("src/handouts.md", &pages.handouts_ids),
-        ],
-        &mut bad,
+    let readme = outside_fences(&read(&root().join("README.md")));
+    let from_readme: usize = pages
+        .check_links(
+            "README.md",
+            &readme,
+            &[
+                ("src/errata.md", &pages.errata_ids),
+                ("src/handouts.md", &pages.handouts_ids),
+            ],
+            &mut bad,
+        )
+        .iter()
+        .sum();
+    eprintln!(
+        "links checked: {own} within a page, {into_errata} from a page into the errata, \
+         {from_readme} from the README"
     );
     assert!(bad.is_empty(), "{bad:#?}");
+    assert!(
+        own > 0 && into_errata > 0 && from_readme > 0,
+        "a kind of link was not found: is the scan broken?"
+    );
 }
 
 /// The README and the pages under `docs/` link to each other's headings and to their own; every
