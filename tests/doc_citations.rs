@@ -10,9 +10,10 @@
 //!   gaps or repeats;
 //! * in a doc comment (`///`, `//!`, outside code blocks) every `ERRATA #n` is the link
 //!   `[ERRATA #n](crate::errata#erratum-n--…)` to that heading;
-//! * every `crate::errata#…` and `crate::handouts#…` link in `src/`, every `#…` link within
-//!   the two pages and every `src/errata.md#…` or `src/handouts.md#…` link in the README
-//!   names a heading that exists (with the id rustdoc, and GitHub, derive from it);
+//! * every `crate::errata#…` and `crate::handouts#…` link in `src/`, every inline `](#…)`
+//!   link within the two pages (outside fenced code) and every `src/errata.md#…` or
+//!   `src/handouts.md#…` link in the README names a heading that exists (with the id rustdoc,
+//!   and GitHub, derive from it);
 //! * every entry of the errata page says what pins it, and the test files and functions it
 //!   names exist, each function in the file named before it.
 //! * every inline link between the README and the pages under `docs/`, and within each of
@@ -255,20 +256,21 @@ fn every_errata_citation_in_src_has_an_anchor_and_doc_comments_link_it() {
     assert!(linked > 0, "no linked citation found: is the scan broken?");
 }
 
-/// The errata and handouts pages' inline links (outside fenced code) to their own headings and
-/// to each other's, and the README's links into them, name headings that exist; each kind of
-/// link the pages have must be found, so that the scan cannot pass by finding nothing.
+/// The errata and handouts pages' inline links to their own headings (`](#…`, outside fenced
+/// code) and their `crate::errata#…`/`crate::handouts#…` links, and the README's links into
+/// the two pages, name headings that exist. Each kind of link the pages have today must be
+/// found (own headings, a page into the errata, the README into each page), so that the scan
+/// cannot pass by finding nothing; the pages have no `crate::handouts#…` link.
 #[test]
 fn links_within_and_into_the_pages_name_existing_headings() {
     let pages = Pages::load();
     let mut bad = Vec::new();
-    // Links checked: to a page's own headings, from a page into the errata, from the README.
-    let (mut own, mut into_errata) = (0, 0);
+    let (mut own, mut into_errata, mut into_handouts) = (0, 0, 0);
     for (name, page, own_ids) in [
         ("src/errata.md", &pages.errata, &pages.errata_ids),
         ("src/handouts.md", &pages.handouts, &pages.handouts_ids),
     ] {
-        let counts = pages.check_links(
+        let [to_own, to_errata, to_handouts] = pages.check_links(
             name,
             &outside_fences(page),
             &[
@@ -277,30 +279,33 @@ fn links_within_and_into_the_pages_name_existing_headings() {
                 ("crate::handouts", &pages.handouts_ids),
             ],
             &mut bad,
-        );
-        own += counts[0];
-        into_errata += counts[1];
+        )[..] else {
+            unreachable!("one count per target")
+        };
+        own += to_own;
+        into_errata += to_errata;
+        into_handouts += to_handouts;
     }
     let readme = outside_fences(&read(&root().join("README.md")));
-    let from_readme: usize = pages
-        .check_links(
-            "README.md",
-            &readme,
-            &[
-                ("src/errata.md", &pages.errata_ids),
-                ("src/handouts.md", &pages.handouts_ids),
-            ],
-            &mut bad,
-        )
-        .iter()
-        .sum();
+    let [readme_errata, readme_handouts] = pages.check_links(
+        "README.md",
+        &readme,
+        &[
+            ("src/errata.md", &pages.errata_ids),
+            ("src/handouts.md", &pages.handouts_ids),
+        ],
+        &mut bad,
+    )[..] else {
+        unreachable!("one count per target")
+    };
     eprintln!(
         "links checked: {own} within a page, {into_errata} from a page into the errata, \
-         {from_readme} from the README"
+         {into_handouts} into the handouts, {readme_errata} from the README into the errata, \
+         {readme_handouts} into the handouts"
     );
     assert!(bad.is_empty(), "{bad:#?}");
     assert!(
-        own > 0 && into_errata > 0 && from_readme > 0,
+        own > 0 && into_errata > 0 && readme_errata > 0 && readme_handouts > 0,
         "a kind of link was not found: is the scan broken?"
     );
 }
